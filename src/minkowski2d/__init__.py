@@ -1,0 +1,40 @@
+"""minkowski2d: exact, fast 2-D Minkowski sums of polygons, and what they power.
+
+>>> import minkowski2d as mk
+>>> mk.minkowski_sum([(0, 0), (2, 0), (0, 2)], [(0, 0), (1, 0), (1, 1), (0, 1)]).tolist()
+[[0, 0], [3, 0], [3, 1], [1, 3], [0, 3]]
+"""
+
+from __future__ import annotations
+
+from . import errors
+from .batch import Ragged, minkowski_sum_many
+from .convex import (
+    convex_hull,
+    cspace_obstacle,
+    is_convex,
+    minkowski_sum,
+    normalize,
+    reflect,
+    signed_area,
+    translate,
+)
+from .errors import GeometryError
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "errors",
+    "GeometryError",
+    "Ragged",
+    "minkowski_sum",
+    "minkowski_sum_many",
+    "normalize",
+    "is_convex",
+    "convex_hull",
+    "signed_area",
+    "translate",
+    "reflect",
+    "cspace_obstacle",
+    "__version__",
+]

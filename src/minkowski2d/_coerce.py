@@ -1,0 +1,205 @@
+"""Turn what the caller gave into one of two internal forms, with every check in one place.
+
+* ``PyPoints``: a Python list of ``(x, y)`` tuples plus a kind, for tiny inputs and for
+  exact numbers that numpy cannot hold (Python ints beyond int64, Fractions).
+* ``ndarray``: an (n, 2) int64 or float64 array for the compiled kernels.
+
+The dtype policy
+----------------
+* ints (Python ``int``, numpy signed/unsigned integers) are exact: kind ``"int"``;
+* any float among the coordinates makes the whole polygon float64: kind ``"float"``
+  (the same upcast numpy does);
+* ``fractions.Fraction`` (and ints mixed with them) stay exact: kind ``"exact"``;
+* bools, complex numbers, strings and anything else are rejected.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+
+from .errors import (
+    CoordinateTypeError,
+    EmptyGeometryError,
+    NonFiniteError,
+    NotConvexError,
+    ShapeError,
+)
+
+INT, FLOAT, EXACT = "int", "float", "exact"
+_RANK = {INT: 0, FLOAT: 1, EXACT: 2}
+
+INT64_MAX = (1 << 63) - 1
+INT64_MIN = -(1 << 63)
+
+_FLOAT_TYPES = (float, np.floating)
+_INT_TYPES = (int, np.integer)
+
+
+def _kind_of_scalar(v: Any, name: str, k: int) -> str:
+    """Kind of one coordinate value; raise for anything that is not a real number."""
+    t = type(v)
+    if t is int:
+        return INT
+    if t is float:
+        return FLOAT
+    if t is bool or isinstance(v, np.bool_):
+        raise CoordinateTypeError(f"{name}: vertex {k} has a bool coordinate ({v!r}); use numbers")
+    if isinstance(v, _INT_TYPES):
+        return INT
+    if isinstance(v, _FLOAT_TYPES):
+        return FLOAT
+    if isinstance(v, Fraction):
+        return EXACT
+    raise CoordinateTypeError(
+        f"{name}: vertex {k} has a coordinate of type {t.__name__} ({v!r}); "
+        "expected int, float or Fraction"
+    )
+
+
+def _shapely_coords(obj: Any, name: str) -> np.ndarray | None:
+    """Vertices of a shapely geometry, or None if ``obj`` is not one."""
+    mod = type(obj).__module__
+    if not mod.startswith("shapely"):
+        return None
+    import shapely
+
+    if obj.is_empty:
+        raise EmptyGeometryError(f"{name}: empty input (empty {obj.geom_type})")
+    gt = obj.geom_type
+    if gt == "Polygon":
+        if len(obj.interiors):
+            raise NotConvexError(
+                f"{name}: polygon has {len(obj.interiors)} hole(s), so it is not convex"
+            )
+        coords = shapely.get_coordinates(obj.exterior)
+        return coords[:-1] if len(coords) > 1 else coords
+    if gt in ("LinearRing", "LineString", "Point", "MultiPoint"):
+        coords = shapely.get_coordinates(obj)
+        if gt == "LinearRing" and len(coords) > 1:
+            coords = coords[:-1]
+        return coords
+    raise ShapeError(f"{name}: a shapely {gt} is not a single polygon, ring or point set")
+
+
+def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
+    """Validate a short sequence of pairs in pure Python.
+
+    Returns the list of ``(x, y)`` tuples (ints converted to Python ints, floats to Python
+    floats) and the kind. Raises the specific :mod:`minkowski2d.errors` exception otherwise.
+    """
+    out = []
+    kind = INT
+    append = out.append
+    for k, p in enumerate(seq):
+        try:
+            x, y = p
+        except (TypeError, ValueError):
+            raise ShapeError(
+                f"{name}: vertex {k} is {p!r}, not an (x, y) pair; expected shape (n, 2)"
+            ) from None
+        tx = type(x)
+        ty = type(y)
+        if tx is int and ty is int:
+            append((x, y))
+            continue
+        if tx is float and ty is float:
+            if x - x != 0.0 or y - y != 0.0:
+                raise NonFiniteError(f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})")
+            kind = FLOAT if kind == INT else kind if kind == FLOAT else EXACT
+            append((x, y))
+            continue
+        kx = _kind_of_scalar(x, name, k)
+        ky = _kind_of_scalar(y, name, k)
+        kk = kx if _RANK[kx] >= _RANK[ky] else ky
+        if kk == FLOAT or (kx == FLOAT or ky == FLOAT):
+            x = float(x)
+            y = float(y)
+            if x - x != 0.0 or y - y != 0.0:
+                raise NonFiniteError(f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})")
+            kk = FLOAT
+        elif kk == INT:
+            x = int(x)
+            y = int(y)
+        append((x, y))
+        if _RANK[kk] > _RANK[kind]:
+            kind = kk
+    if not out:
+        raise EmptyGeometryError(f"{name}: empty input (no vertices)")
+    if kind == EXACT:
+        # A float mixed with Fractions: the floats are exact dyadic rationals, so keep exact.
+        out = [(Fraction(x), Fraction(y)) for x, y in out]
+    elif kind == FLOAT:
+        out = [(float(x), float(y)) for x, y in out]
+    return out, kind
+
+
+def as_array(obj: Any, name: str) -> tuple[np.ndarray | list, str]:
+    """Coerce ``obj`` to an (n, 2) int64/float64 array, or to a Python list for exact kinds.
+
+    Returns ``(data, kind)``; ``data`` is an ndarray for kinds ``"int"`` (values fit in
+    int64) and ``"float"``, and a list of tuples where exact Python numbers are needed.
+    The caller's array is never modified (a view is returned only when no conversion
+    is needed, and callers treat it as read-only).
+    """
+    shp = _shapely_coords(obj, name)
+    if shp is not None:
+        obj = shp
+    try:
+        arr = np.asarray(obj)
+    except (ValueError, TypeError) as exc:
+        raise ShapeError(f"{name}: cannot read as an (n, 2) array of coordinates ({exc})") from None
+    if arr.size == 0:
+        raise EmptyGeometryError(f"{name}: empty input (no vertices)")
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise ShapeError(f"{name}: expected shape (n, 2), got {arr.shape}")
+    dk = arr.dtype.kind
+    if dk == "f":
+        a = arr.astype(np.float64, copy=False)
+        if not np.isfinite(a).all():
+            bad = int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])
+            raise NonFiniteError(
+                f"{name}: vertex {bad} has a non-finite coordinate ({a[bad, 0]!r}, {a[bad, 1]!r})"
+            )
+        return a, FLOAT
+    if dk == "i":
+        return arr.astype(np.int64, copy=False), INT
+    if dk == "u":
+        if arr.dtype.itemsize < 8 or int(arr.max()) <= INT64_MAX:
+            return arr.astype(np.int64), INT
+        return py_points(arr.tolist(), name)
+    if dk == "O":
+        pts, kind = py_points(arr.tolist(), name)
+        if kind == FLOAT:
+            return np.array(pts, dtype=np.float64), FLOAT
+        if kind == INT and all(INT64_MIN <= v <= INT64_MAX for p in pts for v in p):
+            return np.array(pts, dtype=np.int64), INT
+        return pts, kind
+    if dk == "b":
+        raise CoordinateTypeError(f"{name}: coordinates are bools; use numbers")
+    raise CoordinateTypeError(f"{name}: coordinates of dtype {arr.dtype} are not real numbers")
+
+
+def coerce(obj: Any, name: str, tiny: int) -> tuple[Any, str, bool]:
+    """Dispatch to the pure-Python form (small or exact input) or the array form.
+
+    Returns ``(data, kind, is_list)``: ``data`` is a list of tuples when ``is_list``,
+    otherwise an (n, 2) ndarray.
+    """
+    t = type(obj)
+    if (t is list or t is tuple) and len(obj) <= tiny:
+        pts, kind = py_points(obj, name)
+        return pts, kind, True
+    if t is np.ndarray and obj.ndim == 2 and obj.shape[0] <= tiny and obj.dtype.kind in "if":
+        if obj.shape[1] != 2:
+            raise ShapeError(f"{name}: expected shape (n, 2), got {obj.shape}")
+        if obj.shape[0] == 0:
+            raise EmptyGeometryError(f"{name}: empty input (no vertices)")
+        pts, kind = py_points([tuple(r) for r in obj.tolist()], name)
+        return pts, kind, True
+    data, kind = as_array(obj, name)
+    if isinstance(data, list):
+        return data, kind, True
+    return data, kind, False

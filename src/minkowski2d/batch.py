@@ -1,0 +1,292 @@
+"""Many polygons at once: the ragged representation and batched Minkowski sums.
+
+A :class:`Ragged` holds P polygons in one (N, 2) coordinate array and P + 1 offsets:
+polygon ``k`` is ``coords[offsets[k]:offsets[k + 1]]``. It converts to and from a list
+of arrays and a numpy array of shapely geometries, and is what the batched functions
+take and return.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from typing import Any
+
+import numpy as np
+
+from ._coerce import FLOAT, INT, as_array
+from ._types import ArrayLike2
+from .errors import EmptyGeometryError, NonFiniteError, ShapeError
+
+__all__ = ["Ragged", "minkowski_sum_many", "as_ragged_pair"]
+
+
+class Ragged:
+    """P polygons stored flat: ``coords`` (N, 2) and ``offsets`` (P + 1,).
+
+    Parameters
+    ----------
+    coords : (N, 2) int64 or float64 ndarray
+    offsets : (P + 1,) int64 ndarray, starting at 0, non-decreasing, ending at N
+
+    Examples
+    --------
+    >>> from minkowski2d import Ragged
+    >>> r = Ragged.from_list([[(0, 0), (1, 0), (0, 1)], [(5, 5)]])
+    >>> len(r), r.offsets.tolist(), r[1].tolist()
+    (2, [0, 3, 4], [[5, 5]])
+    """
+
+    __slots__ = ("coords", "offsets")
+
+    def __init__(self, coords: np.ndarray, offsets: np.ndarray) -> None:
+        coords = np.asarray(coords)
+        offsets = np.asarray(offsets, dtype=np.int64)
+        if coords.ndim != 2 or coords.shape[1] != 2:
+            raise ShapeError(f"Ragged: coords must have shape (N, 2), got {coords.shape}")
+        if offsets.ndim != 1 or offsets.size == 0 or offsets[0] != 0 or offsets[-1] != len(coords):
+            raise ShapeError("Ragged: offsets must start at 0 and end at len(coords)")
+        if (np.diff(offsets) < 0).any():
+            raise ShapeError("Ragged: offsets must be non-decreasing")
+        self.coords = coords
+        self.offsets = offsets
+
+    # construction ------------------------------------------------------------------
+    @classmethod
+    def from_list(cls, polygons: Sequence[ArrayLike2], name: str = "polygons") -> Ragged:
+        """Build from a sequence of (n_k, 2) array-likes (or shapely geometries)."""
+        if isinstance(polygons, Ragged):
+            return polygons
+        arrs = []
+        for k, p in enumerate(polygons):
+            a = p if type(p) is np.ndarray and p.ndim == 2 and p.dtype.kind in "if" else None
+            if a is None or a.shape[1] != 2 or a.shape[0] == 0:
+                a, kind = as_array(p, f"{name}[{k}]")
+                if isinstance(a, list):
+                    raise ShapeError(
+                        f"{name}[{k}]: coordinates need exact Python numbers; "
+                        "use the single-pair minkowski_sum for these"
+                    )
+            arrs.append(a)
+        if not arrs:
+            return cls(np.empty((0, 2), np.int64), np.zeros(1, np.int64))
+        lengths = np.fromiter((len(a) for a in arrs), np.int64, len(arrs))
+        coords = np.concatenate(arrs)
+        if coords.dtype.kind == "f":
+            coords = coords.astype(np.float64, copy=False)
+            if not np.isfinite(coords).all():
+                row = int(np.flatnonzero(~np.isfinite(coords).all(axis=1))[0])
+                offsets = np.concatenate(([0], np.cumsum(lengths)))
+                k = int(np.searchsorted(offsets, row, side="right") - 1)
+                raise NonFiniteError(
+                    f"{name}[{k}]: vertex {row - offsets[k]} has a non-finite coordinate"
+                )
+        elif coords.dtype.kind in "iu":
+            coords = coords.astype(np.int64, copy=False)
+        offsets = np.zeros(len(arrs) + 1, np.int64)
+        np.cumsum(lengths, out=offsets[1:])
+        return cls(coords, offsets)
+
+    @classmethod
+    def from_shapely(cls, geoms: Any, name: str = "polygons") -> Ragged:
+        """Build from an array of shapely Polygons (holes not allowed), rings or points."""
+        import shapely
+
+        geoms = np.asarray(geoms, dtype=object).ravel()
+        types = shapely.get_type_id(geoms)
+        polys = types == 3
+        if polys.any():
+            nh = shapely.get_num_interior_rings(geoms[polys])
+            if (nh > 0).any():
+                k = int(np.flatnonzero(polys)[np.flatnonzero(nh > 0)[0]])
+                raise ShapeError(f"{name}[{k}]: polygon has holes; Ragged holds simple rings")
+        rings = np.where(polys, shapely.get_exterior_ring(geoms), geoms)
+        coords, index = shapely.get_coordinates(rings, return_index=True)
+        counts = np.bincount(index, minlength=len(geoms)).astype(np.int64)
+        closed = np.isin(shapely.get_type_id(rings), (2,)) & (counts > 1)
+        # drop the closing vertex of each ring
+        ends = np.cumsum(counts)
+        drop = np.zeros(len(coords), bool)
+        drop[ends[closed] - 1] = True
+        coords = coords[~drop]
+        counts = counts - closed
+        if (counts == 0).any():
+            raise EmptyGeometryError(f"{name}[{int(np.flatnonzero(counts == 0)[0])}]: empty geometry")
+        offsets = np.zeros(len(geoms) + 1, np.int64)
+        np.cumsum(counts, out=offsets[1:])
+        return cls(coords, offsets)
+
+    # access --------------------------------------------------------------------------
+    def __len__(self) -> int:
+        return len(self.offsets) - 1
+
+    def __getitem__(self, k: int) -> np.ndarray:
+        n = len(self)
+        if k < 0:
+            k += n
+        if not 0 <= k < n:
+            raise IndexError(k)
+        return self.coords[self.offsets[k] : self.offsets[k + 1]]
+
+    def __iter__(self) -> Iterator[np.ndarray]:
+        for k in range(len(self)):
+            yield self[k]
+
+    def __repr__(self) -> str:
+        return f"Ragged({len(self)} polygons, {len(self.coords)} vertices, dtype={self.coords.dtype})"
+
+    @property
+    def lengths(self) -> np.ndarray:
+        """Vertex count of each polygon, (P,) int64."""
+        return np.diff(self.offsets)
+
+    def to_list(self) -> list[np.ndarray]:
+        """A list of (n_k, 2) arrays (copies)."""
+        return [a.copy() for a in np.split(self.coords, self.offsets[1:-1])]
+
+    def to_shapely(self) -> np.ndarray:
+        """A (P,) object array of shapely geometries: Polygon for three or more vertices,
+        LineString for two, Point for one."""
+        import shapely
+
+        lengths = self.lengths
+        coords = self.coords.astype(np.float64)
+        out = np.empty(len(self), dtype=object)
+        idx = np.repeat(np.arange(len(self)), lengths)
+        for sel, make in ((lengths >= 3, "poly"), (lengths == 2, "line"), (lengths == 1, "point")):
+            if not sel.any():
+                continue
+            rows = sel[idx]
+            sub_idx = np.cumsum(sel)[idx[rows]] - 1
+            if make == "poly":
+                g = shapely.polygons(shapely.linearrings(coords[rows], indices=sub_idx))
+            elif make == "line":
+                g = shapely.linestrings(coords[rows], indices=sub_idx)
+            else:
+                g = shapely.points(coords[rows])
+            out[np.flatnonzero(sel)] = g
+        return out
+
+
+def _is_many(x: Any) -> bool:
+    """True when ``x`` is a collection of polygons rather than one polygon."""
+    if isinstance(x, Ragged):
+        return True
+    if isinstance(x, np.ndarray):
+        return x.dtype == object and x.ndim == 1 and (len(x) == 0 or not np.isscalar(x[0]))
+    if type(x).__module__.startswith("shapely"):
+        return False
+    if isinstance(x, (list, tuple)):
+        if len(x) == 0:
+            return True
+        return np.ndim(x[0]) == 2 or type(x[0]).__module__.startswith("shapely")
+    return False
+
+
+def _as_ragged(x: Any, name: str) -> Ragged:
+    if isinstance(x, Ragged):
+        return x
+    if isinstance(x, np.ndarray) and x.dtype == object:
+        return Ragged.from_shapely(x, name)
+    if isinstance(x, (list, tuple)) and x and type(x[0]).__module__.startswith("shapely"):
+        return Ragged.from_shapely(np.array(x, dtype=object), name)
+    return Ragged.from_list(x, name)
+
+
+def as_ragged_pair(As: Any, Bs: Any) -> tuple[Ragged, np.ndarray, np.ndarray, Ragged, np.ndarray, np.ndarray, int, tuple[str, str]]:
+    """Resolve pairwise or broadcast operands into two Raggeds and per-pair ranges.
+
+    Returns ``(RA, a_lo, a_hi, RB, b_lo, b_hi, P, names)``: pair q is
+    ``RA.coords[a_lo[q]:a_hi[q]]`` with ``RB.coords[b_lo[q]:b_hi[q]]``; ``names`` are the
+    argument names used in error messages (``"As"``/``"a"``).
+    """
+    many_a, many_b = _is_many(As), _is_many(Bs)
+    if not many_a and not many_b:
+        raise ShapeError("give a collection of polygons for As or Bs (or use minkowski_sum)")
+    RA = _as_ragged(As, "As") if many_a else Ragged.from_list([As], "a")
+    RB = _as_ragged(Bs, "Bs") if many_b else Ragged.from_list([Bs], "b")
+    P = len(RA) if many_a else len(RB)
+    if many_a and many_b and len(RA) != len(RB):
+        raise ShapeError(f"As has {len(RA)} polygons but Bs has {len(RB)}; pairs need equal counts")
+    for R, nm in ((RA, "As" if many_a else "a"), (RB, "Bs" if many_b else "b")):
+        L = R.lengths
+        if (L == 0).any():
+            raise EmptyGeometryError(f"{nm}[{int(np.flatnonzero(L == 0)[0])}]: empty input (no vertices)")
+    if many_a:
+        a_lo, a_hi = RA.offsets[:-1], RA.offsets[1:]
+    else:
+        a_lo = np.zeros(P, np.int64)
+        a_hi = np.full(P, len(RA.coords), np.int64)
+    if many_b:
+        b_lo, b_hi = RB.offsets[:-1], RB.offsets[1:]
+    else:
+        b_lo = np.zeros(P, np.int64)
+        b_hi = np.full(P, len(RB.coords), np.int64)
+    return RA, a_lo, a_hi, RB, b_lo, b_hi, P, ("As" if many_a else "a", "Bs" if many_b else "b")
+
+
+def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
+    """Minkowski sums of many pairs of convex polygons in one call.
+
+    Parameters
+    ----------
+    As, Bs : Ragged, sequence of (n, 2) array_like, array of shapely geometries, or one
+        polygon
+        Pairwise (equal counts) or one-against-many (one side a single polygon, which is
+        broadcast).
+
+    Returns
+    -------
+    Ragged
+        Sum ``k`` is ``As[k] ⊕ Bs[k]``, exactly what :func:`minkowski_sum` returns for that
+        pair.
+
+    Raises
+    ------
+    NotConvexError
+        Naming the polygon (``As[k]``) and its vertex.
+    ShapeError, EmptyGeometryError, NonFiniteError
+        Bad input, or unequal counts.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> tri = [(0, 0), (2, 0), (0, 2)]
+    >>> r = mk.minkowski_sum_many([tri, tri], [[(0, 0), (1, 0), (1, 1), (0, 1)], [(3, 3)]])
+    >>> r[0].tolist()
+    [[0, 0], [3, 0], [3, 1], [1, 3], [0, 3]]
+    >>> r[1].tolist()
+    [[3, 3], [5, 3], [3, 5]]
+    """
+    from .convex import _F_HI, _F_LO, _I_HI, _kernels, _raise_kernel_error, minkowski_sum
+
+    RA, a_lo, a_hi, RB, b_lo, b_hi, P, names = as_ragged_pair(As, Bs)
+    ca, cb = RA.coords, RB.coords
+    kind = FLOAT if "f" in (ca.dtype.kind, cb.dtype.kind) else INT
+    if kind == FLOAT:
+        ca = ca.astype(np.float64, copy=False)
+        cb = cb.astype(np.float64, copy=False)
+    fits = True
+    for c in (ca, cb):
+        if c.size:
+            m = np.abs(c).max()
+            if kind == INT:
+                fits &= int(m) <= _I_HI
+            else:
+                nz = np.abs(c)[c != 0]
+                fits &= bool(m <= _F_HI and (nz.size == 0 or nz.min() >= _F_LO))
+    if not fits:
+        # exact Python path, pair by pair (only for coordinates the kernels cannot take)
+        res = [minkowski_sum(ca[a_lo[q] : a_hi[q]], cb[b_lo[q] : b_hi[q]]) for q in range(P)]
+        return Ragged.from_list(res) if res else Ragged(np.empty((0, 2), ca.dtype), np.zeros(1, np.int64))
+    pa = np.ascontiguousarray(ca, dtype=np.float64)
+    pb = pa if cb is ca else np.ascontiguousarray(cb, dtype=np.float64)
+    total = int(np.maximum((a_hi - a_lo) + (b_hi - b_lo), 1).sum())
+    out = np.empty((total, 2), ca.dtype)
+    out_off = np.empty(P + 1, np.int64)
+    code, q, which, v = _kernels().sum_batch(pa, ca, a_lo, a_hi, pb, cb, b_lo, b_hi, out, out_off)
+    if code:
+        nm = names[which] if which < 2 else "result"
+        if which < 2 and nm in ("As", "Bs"):
+            nm = f"{nm}[{q}]"
+        _raise_kernel_error(int(code), 0, int(v), (nm,))
+    return Ragged(out[: out_off[-1]], out_off)
