@@ -339,6 +339,18 @@ def normalize(p: ArrayLike2, *, hull: bool = False) -> Polygon:
     return data[idx]
 
 
+def _check_convex(p: ArrayLike2, name: str) -> bool:
+    """Validate ``p`` (errors name it ``name``); True if convex, False if not."""
+    data, kind, is_list = _prepare(p, name)
+    if is_list:
+        try:
+            _py_normalize(data, kind, name)
+        except NotConvexError:
+            return False
+        return True
+    return not _kernels().normalize_single(_pred_view(data, kind))[2]
+
+
 def is_convex(p: ArrayLike2) -> bool:
     """True when ``p`` is a convex polygon (points and segments count), in either
     orientation.
@@ -355,11 +367,7 @@ def is_convex(p: ArrayLike2) -> bool:
     >>> mk.is_convex(star)
     False
     """
-    try:
-        normalize(p)
-    except NotConvexError:
-        return False
-    return True
+    return _check_convex(p, "p")
 
 
 def convex_hull(points: ArrayLike2) -> Polygon:

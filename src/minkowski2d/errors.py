@@ -26,6 +26,7 @@ __all__ = [
     "NotConvexError",
     "SelfIntersectionError",
     "OverflowGeometryError",
+    "InputFormatError",
 ]
 
 
@@ -69,3 +70,7 @@ class SelfIntersectionError(GeometryError):
 
 class OverflowGeometryError(GeometryError):
     """A float result does not fit in float64 (it would be infinite)."""
+
+
+class InputFormatError(GeometryError):
+    """A file or text could not be read as any supported polygon format."""

@@ -1,0 +1,221 @@
+"""The ``minkowski2d`` command (also ``python -m minkowski2d``).
+
+Subcommands: ``demo``, ``sum``, ``inflate``, ``hull``, and those that feature modules
+register through ``add_parser(subparsers)`` (animation, collision, general sums).
+
+Bad input prints one line, ``minkowski2d: error: <what and where>``, on standard error
+and exits with status 2; no output file is written then, and an output path that names
+one of the input files is refused.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+__all__ = ["main", "emit", "build_parser"]
+
+_PLUGINS = (
+    "minkowski2d.animation.cli",
+    "minkowski2d._cli_collision",
+    "minkowski2d._cli_general",
+)
+
+SEED_A = [(0, 0), (2, 0), (0, 2)]
+SEED_B = [(0, 0), (1, 0), (1, 1), (0, 1)]
+
+
+class CLIError(Exception):
+    """A usage problem reported as one line (exit status 2)."""
+
+
+def emit(text: str, output: str | None, inputs: Sequence[str] = ()) -> None:
+    """Write ``text`` to standard output, or to the file ``output``.
+
+    Refuses (``CLIError``) to write over any of ``inputs``; writes the file only once the
+    whole text exists, through a temporary file renamed into place.
+    """
+    if output in (None, "-"):
+        sys.stdout.write(text if text.endswith("\n") else text + "\n")
+        return
+    out = Path(output)
+    for src in inputs:
+        if src != "-" and Path(src).exists() and out.exists() and os.path.samefile(src, out):
+            raise CLIError(f"refusing to overwrite the input file {src}")
+    tmp = out.with_name(out.name + ".tmp")
+    tmp.write_text(text if text.endswith("\n") else text + "\n")
+    os.replace(tmp, out)
+
+
+def _add_io_options(p: argparse.ArgumentParser) -> None:
+    from .io import FORMATS
+
+    p.add_argument("-o", "--output", help="output file (default: standard output)")
+    p.add_argument(
+        "--format",
+        choices=FORMATS,
+        default=None,
+        help="output format (default: from the -o suffix, else json)",
+    )
+
+
+def output_format(args: argparse.Namespace) -> str:
+    """The chosen format, or the one the output suffix names, or json."""
+    if args.format:
+        return args.format
+    suffix = Path(args.output).suffix.lower() if args.output else ""
+    return {".wkt": "wkt", ".geojson": "geojson", ".svg": "svg"}.get(suffix, "json")
+
+
+def _is_general(g: Any, name: str) -> bool:
+    """True when ``g`` needs the general (non-convex / holes) sum; validates ``g``."""
+    import numpy as np
+
+    from .convex import _check_convex
+
+    if not isinstance(g, np.ndarray):
+        return True  # shapely Polygon with holes or MultiPolygon
+    return not _check_convex(g, name)
+
+
+def _cmd_demo(args: argparse.Namespace) -> int:
+    from .convex import minkowski_sum
+
+    s = minkowski_sum(SEED_A, SEED_B)
+    print("A (triangle):", [list(p) for p in SEED_A])
+    print("B (square):  ", [list(p) for p in SEED_B])
+    print("A ⊕ B:       ", s.tolist())
+    try:
+        from .animation import write_demo_page
+    except ImportError:
+        return 0
+    path = write_demo_page(Path(args.output or "animation.html"))
+    print(f"animation:    {Path(path).resolve()}")
+    return 0
+
+
+def _cmd_sum(args: argparse.Namespace) -> int:
+    from .convex import minkowski_sum
+    from .io import format_geometry, read_geometry
+
+    a = read_geometry(args.a)
+    b = read_geometry(args.b)
+    if not args.hull and (_is_general(a, args.a) | _is_general(b, args.b)):
+        try:
+            from .general import minkowski_sum_general
+        except ImportError:
+            minkowski_sum_general = None
+        if minkowski_sum_general is None:
+            from .errors import NotConvexError
+
+            raise NotConvexError("an input is not convex (use --hull for its convex hull)")
+        print(
+            "minkowski2d: note: an input is not convex or has holes; using the general sum",
+            file=sys.stderr,
+        )
+        result = minkowski_sum_general(a, b)
+    else:
+        result = minkowski_sum(a, b, hull=args.hull)
+    emit(format_geometry(result, output_format(args)), args.output, [args.a, args.b])
+    return 0
+
+
+def _cmd_inflate(args: argparse.Namespace) -> int:
+    from .convex import cspace_obstacle
+    from .io import format_geometry, read_geometry
+
+    result = cspace_obstacle(read_geometry(args.obstacle), read_geometry(args.robot), hull=args.hull)
+    emit(format_geometry(result, output_format(args)), args.output, [args.obstacle, args.robot])
+    return 0
+
+
+def _cmd_hull(args: argparse.Namespace) -> int:
+    from .convex import convex_hull
+    from .io import format_geometry, read_geometry
+
+    result = convex_hull(read_geometry(args.points))
+    emit(format_geometry(result, output_format(args)), args.output, [args.points])
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser with every subcommand registered."""
+    from . import __version__
+
+    parser = argparse.ArgumentParser(
+        prog="minkowski2d",
+        description="Exact 2-D Minkowski sums of polygons. Inputs are JSON point lists, "
+        "GeoJSON, WKT or CGAL .dat files, or - for standard input.",
+    )
+    parser.add_argument("--version", action="version", version=f"minkowski2d {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+
+    p = sub.add_parser("demo", help="the seed's example: triangle ⊕ square (and its animation)")
+    p.add_argument("-o", "--output", help="where to write the animation page (animation.html)")
+    p.set_defaults(func=_cmd_demo)
+
+    p = sub.add_parser("sum", help="Minkowski sum A ⊕ B")
+    p.add_argument("a", help="polygon A (file or -)")
+    p.add_argument("b", help="polygon B (file or -)")
+    p.add_argument("--hull", action="store_true", help="use the convex hulls of the inputs")
+    _add_io_options(p)
+    p.set_defaults(func=_cmd_sum)
+
+    p = sub.add_parser("inflate", help="configuration-space obstacle: obstacle ⊕ (−robot)")
+    p.add_argument("obstacle", help="obstacle polygon (file or -)")
+    p.add_argument("robot", help="robot polygon, reference point at its origin (file or -)")
+    p.add_argument("--hull", action="store_true", help="use the convex hulls of the inputs")
+    _add_io_options(p)
+    p.set_defaults(func=_cmd_inflate)
+
+    p = sub.add_parser("hull", help="convex hull of a point set")
+    p.add_argument("points", help="points (file or -)")
+    _add_io_options(p)
+    p.set_defaults(func=_cmd_hull)
+
+    for name in _PLUGINS:
+        try:
+            mod = importlib.import_module(name)
+        except ModuleNotFoundError as exc:
+            if exc.name is not None and name.startswith(exc.name):
+                continue
+            raise
+        mod.add_parser(sub)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; returns the exit status.
+
+    Examples
+    --------
+    >>> main(["demo", "-o", "/tmp/minkowski2d-doctest.html"])  # doctest: +ELLIPSIS
+    A (triangle): [[0, 0], [2, 0], [0, 2]]
+    B (square):   [[0, 0], [1, 0], [1, 1], [0, 1]]
+    A ⊕ B:        [[0, 0], [3, 0], [3, 1], [1, 3], [0, 3]]
+    ...
+    0
+    """
+    from .errors import GeometryError
+
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except (GeometryError, CLIError) as exc:
+        print(f"minkowski2d: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
