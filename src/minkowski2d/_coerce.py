@@ -107,7 +107,9 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
             continue
         if tx is float and ty is float:
             if x - x != 0.0 or y - y != 0.0:
-                raise NonFiniteError(f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})")
+                raise NonFiniteError(
+                    f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
+                )
             kind = FLOAT if kind == INT else kind if kind == FLOAT else EXACT
             append((x, y))
             continue
@@ -118,7 +120,9 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
             x = float(x)
             y = float(y)
             if x - x != 0.0 or y - y != 0.0:
-                raise NonFiniteError(f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})")
+                raise NonFiniteError(
+                    f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
+                )
             kk = FLOAT
         elif kk == INT:
             x = int(x)
@@ -136,7 +140,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
     return out, kind
 
 
-def as_array(obj: Any, name: str) -> tuple[np.ndarray | list, str]:
+def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray | list, str]:
     """Coerce ``obj`` to an (n, 2) int64/float64 array, or to a Python list for exact kinds.
 
     Returns ``(data, kind)``; ``data`` is an ndarray for kinds ``"int"`` (values fit in
@@ -158,7 +162,8 @@ def as_array(obj: Any, name: str) -> tuple[np.ndarray | list, str]:
     dk = arr.dtype.kind
     if dk == "f":
         a = arr.astype(np.float64, copy=False)
-        if not np.isfinite(a).all():
+        # ``check_finite=False``: the caller's own range pass (convex._fits_kernel) checks
+        if check_finite and not np.isfinite(a).all():
             bad = int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])
             raise NonFiniteError(
                 f"{name}: vertex {bad} has a non-finite coordinate ({a[bad, 0]!r}, {a[bad, 1]!r})"
@@ -199,7 +204,7 @@ def coerce(obj: Any, name: str, tiny: int) -> tuple[Any, str, bool]:
             raise EmptyGeometryError(f"{name}: empty input (no vertices)")
         pts, kind = py_points([tuple(r) for r in obj.tolist()], name)
         return pts, kind, True
-    data, kind = as_array(obj, name)
+    data, kind = as_array(obj, name, check_finite=False)
     if isinstance(data, list):
         return data, kind, True
     return data, kind, False

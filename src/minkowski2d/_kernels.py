@@ -27,6 +27,10 @@ TURNS_BOTH_WAYS = 1
 SPIKE = 2
 WINDS_TWICE = 3
 NOT_FINITE = 4
+RANGE = 5  # a value outside the kernels' exact range, or non-finite: Python decides
+
+F_HI = 2.0**400
+F_LO = 2.0**-400
 
 _JIT = dict(cache=True, nogil=True, boundscheck=False)
 
@@ -135,6 +139,104 @@ def _upper(p, i, j):
     return p[j, 1] > p[i, 1] or (p[j, 1] == p[i, 1] and p[j, 0] > p[i, 0])
 
 
+@njit(inline="always", **_JIT)
+def _at_implicit(t, b, step, lo, n):
+    v = b + step * t
+    if v >= lo + n:
+        v -= n
+    elif v < lo:
+        v += n
+    return v
+
+
+@njit(inline="always", **_JIT)
+def _at(ia, t, b, step, lo, n):
+    """Vertex index of position t (0 <= t <= n) of a normalized polygon: ``ia[t]`` for an
+    explicit index list (step == 0), else ``b + step * t`` wrapped into [lo, lo + n)."""
+    if step == 0:
+        return ia[t] if t < n else ia[0]
+    return _at_implicit(t, b, step, lo, n)
+
+
+@njit(**_JIT)
+def _fast_check(p, lo, hi):
+    """Start-independent convexity test for the common case, branch-free over the middle.
+
+    Returns +1 (strictly convex, CCW), -1 (strictly convex, CW), 2 when a coordinate is
+    non-finite or outside [F_LO, F_HI] (the caller decides in exact Python), or 0 when
+    the float filter is unsure anywhere, a vertex repeats, or a turn is straight: the
+    general pass decides those exactly. The edge directions wind once exactly when there is one
+    upper-to-lower half-plane transition (every turn being less than half a turn).
+    """
+    n = hi - lo
+    pos = 0
+    neg = 0
+    trans = 0
+    big = 0.0
+    small = np.inf
+    for i in range(lo, hi):
+        ax = abs(p[i, 0])
+        ay = abs(p[i, 1])
+        big = max(big, max(ax, ay))
+        small = min(small, min(ax if ax != 0.0 else np.inf, ay if ay != 0.0 else np.inf))
+    if not (big <= F_HI and small >= F_LO):  # also catches NaN and inf
+        return 2
+    if n < 3:
+        return 0
+    for t in range(n):
+        i = lo + t
+        h = i - 1 if t > 0 else hi - 1
+        k = i + 1 if t + 1 < n else lo
+        ux = p[i, 0] - p[h, 0]
+        uy = p[i, 1] - p[h, 1]
+        vx = p[k, 0] - p[i, 0]
+        vy = p[k, 1] - p[i, 1]
+        lft = ux * vy
+        rgt = uy * vx
+        det = lft - rgt
+        bnd = ERRBOUND * (abs(lft) + abs(rgt))
+        pos += det > bnd
+        neg += det < -bnd
+        up1 = (uy > 0.0) | ((uy == 0.0) & (ux > 0.0))
+        up2 = (vy > 0.0) | ((vy == 0.0) & (vx > 0.0))
+        trans += up1 & (not up2)
+    if trans != 1:
+        return 0
+    if pos == n:
+        return 1
+    if neg == n:
+        return -1
+    return 0
+
+
+@njit(**_JIT)
+def _fast_normalize(p, lo, hi):
+    """(b, step, split) for a polygon that passes ``_fast_check``; else (0, 0 or 2, 0)."""
+    s = _fast_check(p, lo, hi)
+    if s == 0 or s == 2:
+        return 0, s, 0
+    n = hi - lo
+    b = lo
+    by = p[lo, 1]
+    bx = p[lo, 0]
+    for i in range(lo + 1, hi):
+        y = p[i, 1]
+        if y < by or (y == by and p[i, 0] < bx):
+            b = i
+            by = y
+            bx = p[i, 0]
+    # halves run upper...upper lower...lower from the bottom vertex: binary search
+    t0 = 0
+    t1 = n - 1
+    while t0 < t1:
+        tm = (t0 + t1) // 2
+        if _upper(p, _at_implicit(tm, b, s, lo, n), _at_implicit(tm + 1, b, s, lo, n)):
+            t0 = tm + 1
+        else:
+            t1 = tm
+    return b, s, t0
+
+
 @njit(**_JIT)
 def _normalize(p, lo, hi, keep, turn, out):
     """Normalize the polygon ``p[lo:hi]`` (convex, any orientation and start).
@@ -143,7 +245,15 @@ def _normalize(p, lo, hi, keep, turn, out):
     ``k`` vertices, ``split`` the index of the first edge pointing into the lower
     half-plane, and on failure a status code with the offending vertex (relative to lo).
     ``keep`` (int64) and ``turn`` (int8) are scratch of size >= hi - lo.
+
+    Also returns ``(b, step)``: when ``step`` is nonzero the common case held and ``out``
+    was NOT written: position t is vertex ``b + step * t`` (wrapped), see ``_at``.
     """
+    b, step, split = _fast_normalize(p, lo, hi)
+    if step == 2:
+        return 0, 0, RANGE, 0, 0, 0
+    if step != 0:
+        return hi - lo, split, OK, 0, b, step
     m = 0
     for i in range(lo, hi):
         if m == 0 or p[i, 0] != p[keep[m - 1], 0] or p[i, 1] != p[keep[m - 1], 1]:
@@ -153,7 +263,7 @@ def _normalize(p, lo, hi, keep, turn, out):
         m -= 1
     if m == 1:
         out[0] = keep[0]
-        return 1, 1, OK, 0
+        return 1, 1, OK, 0, 0, 0
     b = 0
     for t in range(1, m):
         i = keep[t]
@@ -172,7 +282,7 @@ def _normalize(p, lo, hi, keep, turn, out):
             if s == 0:
                 s = o
             elif o != s:
-                return 0, 0, TURNS_BOTH_WAYS, cur - lo
+                return 0, 0, TURNS_BOTH_WAYS, cur - lo, 0, 0
     if s == 0:
         # all collinear: the segment between the extreme points
         top = keep[0]
@@ -182,7 +292,7 @@ def _normalize(p, lo, hi, keep, turn, out):
                 top = i
         out[0] = keep[b]
         out[1] = top
-        return 2, 1, OK, 0
+        return 2, 1, OK, 0, 0, 0
     k = 0
     for t in range(m):
         tt = t if s > 0 else (m - t) % m
@@ -194,7 +304,7 @@ def _normalize(p, lo, hi, keep, turn, out):
             if _sgn(p[cur, 0] - p[prv, 0]) != _sgn(p[nxt, 0] - p[cur, 0]) or _sgn(
                 p[cur, 1] - p[prv, 1]
             ) != _sgn(p[nxt, 1] - p[cur, 1]):
-                return 0, 0, SPIKE, cur - lo
+                return 0, 0, SPIKE, cur - lo, 0, 0
             continue
         out[k] = cur
         k += 1
@@ -206,23 +316,28 @@ def _normalize(p, lo, hi, keep, turn, out):
             if not up:
                 split = t
         elif up:
-            return 0, 0, WINDS_TWICE, out[t] - lo
-    return k, split, OK, 0
+            return 0, 0, WINDS_TWICE, out[t] - lo, 0, 0
+    return k, split, OK, 0, 0, 0
 
 
 @njit(**_JIT)
-def _merge(pa, va, ia, na, sa, pb, vb, ib, nb, sb, out, o0):
+def _merge(pa, va, ia, na, sa, ba, ta, la, pb, vb, ib, nb, sb, bb, tb, lb, out, o0):
     """Merge two normalized polygons' edges by angle; write the sum's vertices at out[o0:].
 
+    Each polygon is given as (indices, count, split, b, step, lo) from ``_normalize``.
     Returns the number of vertices written, or -1 if a float coordinate overflowed.
+    The float filter is inlined (measured: 17 ms against 23 ms through the call for
+    n = m = 2**20); only entries it cannot decide call the exact ``cross_sign``.
     """
     ea = na if na > 1 else 0
     eb = nb if nb > 1 else 0
     i = 0
     j = 0
     k = o0
-    ai = ia[0]
-    bj = ib[0]
+    ai = _at(ia, 0, ba, ta, la, na)
+    a1 = _at(ia, 1, ba, ta, la, na) if na > 1 else ai
+    bj = _at(ib, 0, bb, tb, lb, nb)
+    b1 = _at(ib, 1, bb, tb, lb, nb) if nb > 1 else bj
     while True:
         x = va[ai, 0] + vb[bj, 0]
         y = va[ai, 1] + vb[bj, 1]
@@ -231,68 +346,83 @@ def _merge(pa, va, ia, na, sa, pb, vb, ib, nb, sb, out, o0):
         if x - x != 0 or y - y != 0:
             return -1
         k += 1
-        if i == ea and j == eb:
-            break
-        if i == ea:
-            step = 1
-        elif j == eb:
-            step = -1
-        else:
+        if i < ea and j < eb:
             ha = i >= sa
             hb = j >= sb
             if ha != hb:
                 step = 1 if ha else -1
             else:
-                a1 = ia[i + 1] if i + 1 < na else ia[0]
-                b1 = ib[j + 1] if j + 1 < nb else ib[0]
-                c = cross_sign(
-                    pa[ai, 0], pa[ai, 1], pa[a1, 0], pa[a1, 1],
-                    pb[bj, 0], pb[bj, 1], pb[b1, 0], pb[b1, 1],
-                )
-                step = -c  # c > 0: b is counter-clockwise of a, so a comes first
+                ux = pa[a1, 0] - pa[ai, 0]
+                uy = pa[a1, 1] - pa[ai, 1]
+                vx = pb[b1, 0] - pb[bj, 0]
+                vy = pb[b1, 1] - pb[bj, 1]
+                lft = ux * vy
+                rgt = uy * vx
+                det = lft - rgt
+                bnd = ERRBOUND * (abs(lft) + abs(rgt))
+                if det > bnd:
+                    step = -1
+                elif -det > bnd:
+                    step = 1
+                else:
+                    step = -cross_sign(
+                        pa[ai, 0],
+                        pa[ai, 1],
+                        pa[a1, 0],
+                        pa[a1, 1],
+                        pb[bj, 0],
+                        pb[bj, 1],
+                        pb[b1, 0],
+                        pb[b1, 1],
+                    )
+        elif i < ea:
+            step = -1
+        else:
+            step = 1
         if step <= 0:
             i += 1
-            ai = ia[i] if i < na else ia[0]
+            ai = a1
+            a1 = _at(ia, i + 1, ba, ta, la, na) if i + 1 <= na else a1
         if step >= 0:
             j += 1
-            bj = ib[j] if j < nb else ib[0]
-        if i == ea and j == eb:
+            bj = b1
+            b1 = _at(ib, j + 1, bb, tb, lb, nb) if j + 1 <= nb else b1
+        if i >= ea and j >= eb:
             break
     return k - o0
 
 
 @njit(**_JIT)
-def sum_single(pa, va, pb, vb):
-    """Minkowski sum of two convex polygons; returns (out, code, which, vertex)."""
+def sum_single(pa, va, pb, vb, ia, ib, keep, turn, out):
+    """Minkowski sum of two convex polygons into ``out``; returns (k, code, which, vertex).
+
+    Buffers come from the caller (numpy's allocator reuses warm memory; numba's does
+    not): ``ia``/``ib`` int64 of the polygons' sizes, ``keep``/``turn`` scratch of the
+    larger size, ``out`` (na + nb, 2) in the output dtype.
+    """
     na = pa.shape[0]
     nb = pb.shape[0]
-    n = max(na, nb)
-    keep = np.empty(n, np.int64)
-    turn = np.empty(n, np.int8)
-    ia = np.empty(na, np.int64)
-    ib = np.empty(nb, np.int64)
-    ka, sa, code, v = _normalize(pa, 0, na, keep, turn, ia)
+    ka, sa, code, v, ba, ta = _normalize(pa, 0, na, keep, turn, ia)
     if code != OK:
-        return np.empty((0, 2), va.dtype), code, 0, v
-    kb, sb, code, v = _normalize(pb, 0, nb, keep, turn, ib)
+        return 0, code, 0, v
+    kb, sb, code, v, bb, tb = _normalize(pb, 0, nb, keep, turn, ib)
     if code != OK:
-        return np.empty((0, 2), va.dtype), code, 1, v
-    out = np.empty((ka + kb, 2), va.dtype)
-    k = _merge(pa, va, ia, ka, sa, pb, vb, ib, kb, sb, out, 0)
+        return 0, code, 1, v
+    k = _merge(pa, va, ia, ka, sa, ba, ta, 0, pb, vb, ib, kb, sb, bb, tb, 0, out, 0)
     if k < 0:
-        return np.empty((0, 2), va.dtype), NOT_FINITE, 2, 0
-    return out[:k], OK, 0, 0
+        return 0, NOT_FINITE, 2, 0
+    return k, OK, 0, 0
 
 
 @njit(**_JIT)
-def normalize_single(p):
-    """Normalized vertex indices of one polygon: (indices, split, code, vertex)."""
+def normalize_single(p, keep, turn, out):
+    """Normalize one polygon into ``out`` (int64, size n): (k, split, code, vertex)."""
     n = p.shape[0]
-    keep = np.empty(n, np.int64)
-    turn = np.empty(n, np.int8)
-    out = np.empty(n, np.int64)
-    k, s, code, v = _normalize(p, 0, n, keep, turn, out)
-    return out[:k], s, code, v
+    k, split, code, v, b, step = _normalize(p, 0, n, keep, turn, out)
+    if step != 0:
+        for t in range(k):
+            out[t] = _at_implicit(t, b, step, 0, n)
+    return k, split, code, v
 
 
 @njit(**_JIT)
@@ -313,13 +443,13 @@ def sum_batch(pa, va, a_lo, a_hi, pb, vb, b_lo, b_hi, out, out_off):
     o = 0
     out_off[0] = 0
     for q in range(P):
-        ka, sa, code, v = _normalize(pa, a_lo[q], a_hi[q], keep, turn, ia)
+        ka, sa, code, v, ba, ta = _normalize(pa, a_lo[q], a_hi[q], keep, turn, ia)
         if code != OK:
             return code, q, 0, v
-        kb, sb, code, v = _normalize(pb, b_lo[q], b_hi[q], keep, turn, ib)
+        kb, sb, code, v, bb, tb = _normalize(pb, b_lo[q], b_hi[q], keep, turn, ib)
         if code != OK:
             return code, q, 1, v
-        k = _merge(pa, va, ia, ka, sa, pb, vb, ib, kb, sb, out, o)
+        k = _merge(pa, va, ia, ka, sa, ba, ta, a_lo[q], pb, vb, ib, kb, sb, bb, tb, b_lo[q], out, o)
         if k < 0:
             return NOT_FINITE, q, 2, 0
         o += k
@@ -348,3 +478,23 @@ def convex_hull_sorted(p, order):
         h[k] = i
         k += 1
     return h[: k - 1]
+
+
+@njit(**_JIT)
+def check_range(c, is_float, hi, lo):
+    """One pass over the coordinates: (code, row). code 0: fine for the kernels;
+    1: a non-finite float at ``row``; 2: a value outside the exact range (|x| > hi, or a
+    nonzero |x| < lo) — the caller falls back to exact Python arithmetic."""
+    bad = 0
+    row = 0
+    for i in range(c.shape[0]):
+        for j in range(2):
+            x = c[i, j]
+            if is_float and x - x != 0:
+                return 1, i
+            ax = abs(x)
+            if ax > hi or (ax != 0 and ax < lo):
+                if bad == 0:
+                    bad = 2
+                    row = i
+    return bad, row

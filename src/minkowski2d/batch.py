@@ -110,7 +110,9 @@ class Ragged:
         coords = coords[~drop]
         counts = counts - closed
         if (counts == 0).any():
-            raise EmptyGeometryError(f"{name}[{int(np.flatnonzero(counts == 0)[0])}]: empty geometry")
+            raise EmptyGeometryError(
+                f"{name}[{int(np.flatnonzero(counts == 0)[0])}]: empty geometry"
+            )
         offsets = np.zeros(len(geoms) + 1, np.int64)
         np.cumsum(counts, out=offsets[1:])
         return cls(coords, offsets)
@@ -132,7 +134,9 @@ class Ragged:
             yield self[k]
 
     def __repr__(self) -> str:
-        return f"Ragged({len(self)} polygons, {len(self.coords)} vertices, dtype={self.coords.dtype})"
+        return (
+            f"Ragged({len(self)} polygons, {len(self.coords)} vertices, dtype={self.coords.dtype})"
+        )
 
     @property
     def lengths(self) -> np.ndarray:
@@ -192,7 +196,9 @@ def _as_ragged(x: Any, name: str) -> Ragged:
     return Ragged.from_list(x, name)
 
 
-def as_ragged_pair(As: Any, Bs: Any) -> tuple[Ragged, np.ndarray, np.ndarray, Ragged, np.ndarray, np.ndarray, int, tuple[str, str]]:
+def as_ragged_pair(
+    As: Any, Bs: Any
+) -> tuple[Ragged, np.ndarray, np.ndarray, Ragged, np.ndarray, np.ndarray, int, tuple[str, str]]:
     """Resolve pairwise or broadcast operands into two Raggeds and per-pair ranges.
 
     Returns ``(RA, a_lo, a_hi, RB, b_lo, b_hi, P, names)``: pair q is
@@ -210,7 +216,9 @@ def as_ragged_pair(As: Any, Bs: Any) -> tuple[Ragged, np.ndarray, np.ndarray, Ra
     for R, nm in ((RA, "As" if many_a else "a"), (RB, "Bs" if many_b else "b")):
         L = R.lengths
         if (L == 0).any():
-            raise EmptyGeometryError(f"{nm}[{int(np.flatnonzero(L == 0)[0])}]: empty input (no vertices)")
+            raise EmptyGeometryError(
+                f"{nm}[{int(np.flatnonzero(L == 0)[0])}]: empty input (no vertices)"
+            )
     if many_a:
         a_lo, a_hi = RA.offsets[:-1], RA.offsets[1:]
     else:
@@ -257,7 +265,7 @@ def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
     >>> r[1].tolist()
     [[3, 3], [5, 3], [3, 5]]
     """
-    from .convex import _F_HI, _F_LO, _I_HI, _kernels, _raise_kernel_error, minkowski_sum
+    from .convex import _fits_kernel, _kernels, _raise_kernel_error, minkowski_sum
 
     RA, a_lo, a_hi, RB, b_lo, b_hi, P, names = as_ragged_pair(As, Bs)
     ca, cb = RA.coords, RB.coords
@@ -265,19 +273,15 @@ def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
     if kind == FLOAT:
         ca = ca.astype(np.float64, copy=False)
         cb = cb.astype(np.float64, copy=False)
-    fits = True
-    for c in (ca, cb):
-        if c.size:
-            m = np.abs(c).max()
-            if kind == INT:
-                fits &= int(m) <= _I_HI
-            else:
-                nz = np.abs(c)[c != 0]
-                fits &= bool(m <= _F_HI and (nz.size == 0 or nz.min() >= _F_LO))
+    fits = _fits_kernel(ca, kind, names[0]) & _fits_kernel(cb, kind, names[1])
     if not fits:
         # exact Python path, pair by pair (only for coordinates the kernels cannot take)
         res = [minkowski_sum(ca[a_lo[q] : a_hi[q]], cb[b_lo[q] : b_hi[q]]) for q in range(P)]
-        return Ragged.from_list(res) if res else Ragged(np.empty((0, 2), ca.dtype), np.zeros(1, np.int64))
+        return (
+            Ragged.from_list(res)
+            if res
+            else Ragged(np.empty((0, 2), ca.dtype), np.zeros(1, np.int64))
+        )
     pa = np.ascontiguousarray(ca, dtype=np.float64)
     pb = pa if cb is ca else np.ascontiguousarray(cb, dtype=np.float64)
     total = int(np.maximum((a_hi - a_lo) + (b_hi - b_lo), 1).sum())

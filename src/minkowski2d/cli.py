@@ -129,7 +129,9 @@ def _cmd_inflate(args: argparse.Namespace) -> int:
     from .convex import cspace_obstacle
     from .io import format_geometry, read_geometry
 
-    result = cspace_obstacle(read_geometry(args.obstacle), read_geometry(args.robot), hull=args.hull)
+    result = cspace_obstacle(
+        read_geometry(args.obstacle), read_geometry(args.robot), hull=args.hull
+    )
     emit(format_geometry(result, output_format(args)), args.output, [args.obstacle, args.robot])
     return 0
 

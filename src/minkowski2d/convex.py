@@ -19,7 +19,7 @@ import numpy as np
 from ._coerce import EXACT, FLOAT, INT, INT64_MIN, coerce
 from ._types import ArrayLike2, Polygon
 from .errors import NotConvexError, OverflowGeometryError
-from .predicates import _cross_exact, _cross_float
+from .predicates import ERRBOUND, _cross_exact, _cross_float
 
 __all__ = [
     "normalize",
@@ -40,7 +40,7 @@ _F_HI = 2.0**400
 _F_LO = 2.0**-400
 _I_HI = 1 << 53
 
-_TURNS_BOTH_WAYS, _SPIKE, _WINDS_TWICE, _NOT_FINITE = 1, 2, 3, 4
+_TURNS_BOTH_WAYS, _SPIKE, _WINDS_TWICE, _NOT_FINITE, _RANGE = 1, 2, 3, 4, 5
 
 
 def _not_convex(name: str, code: int, vertex: int) -> NotConvexError:
@@ -60,6 +60,63 @@ def _not_convex(name: str, code: int, vertex: int) -> NotConvexError:
 # pure-Python path
 
 
+def _py_fast(pts: list, kind: str) -> tuple[list, list, int] | None:
+    """The common case of :func:`_py_normalize` in one loop: distinct vertices, every turn
+    strictly the same way (certain under the float filter), edges winding once (one
+    upper-to-lower half-plane transition). Returns None to defer to the general pass,
+    which decides everything else exactly."""
+    n = len(pts)
+    cx, cy = pts[-1]
+    px, py = pts[-2]
+    ux = cx - px
+    uy = cy - py
+    upu = uy > 0 or (uy == 0 and ux > 0)
+    pos = neg = trans = 0
+    fl = kind == FLOAT
+    b = 0
+    bx, by = pts[0]
+    k = 0
+    for nx, ny in pts:
+        vx = nx - cx
+        vy = ny - cy
+        if fl:
+            lft = ux * vy
+            rgt = uy * vx
+            d = lft - rgt
+            if abs(d) <= ERRBOUND * (abs(lft) + abs(rgt)):
+                return None
+        else:
+            d = ux * vy - uy * vx
+        if d > 0:
+            pos += 1
+        elif d < 0:
+            neg += 1
+        else:
+            return None
+        upv = vy > 0 or (vy == 0 and vx > 0)
+        if upu and not upv:
+            trans += 1
+        if ny < by or (ny == by and nx < bx):
+            b, bx, by = k, nx, ny
+        upu, ux, uy, cx, cy = upv, vx, vy, nx, ny
+        k += 1
+    if trans != 1 or (pos and neg):
+        return None
+    if pos:
+        order = list(range(b, n)) + list(range(b))
+    else:
+        order = list(range(b, -1, -1)) + list(range(n - 1, b, -1))
+    q = [pts[t] for t in order]
+    x0, y0 = bx, by
+    split = 0
+    for x1, y1 in q[1:]:
+        if y1 < y0 or (y1 == y0 and x1 <= x0):
+            break
+        x0, y0 = x1, y1
+        split += 1
+    return q, order, split
+
+
 def _py_normalize(pts: list, kind: str, name: str) -> tuple[list, list, int]:
     """Normalize a convex polygon given as a list of tuples.
 
@@ -67,6 +124,10 @@ def _py_normalize(pts: list, kind: str, name: str) -> tuple[list, list, int]:
     duplicate or collinear vertices; ``split`` is the index of the first edge that points
     into the lower half-plane. Raises NotConvexError naming the caller's vertex.
     """
+    if len(pts) >= 3:
+        fast = _py_fast(pts, kind)
+        if fast is not None:
+            return fast
     xs = _cross_float if kind == FLOAT else _cross_exact
     n = len(pts)
     idx = [0]
@@ -141,46 +202,71 @@ def _py_normalize(pts: list, kind: str, name: str) -> tuple[list, list, int]:
     return q, idx, split
 
 
-def _py_merge(A: list, sa: int, B: list, sb: int, kind: str, record: list | None = None) -> list:
+def _py_merge(
+    A: list, sa: int, B: list, sb: int, kind: str, record: list | None = None, flat: bool = False
+) -> list:
     """Merge the edges of two normalized polygons by angle; return the sum's vertices.
 
-    When ``record`` is a list, one entry per step is appended:
+    With ``flat`` the result is one flat list ``[x0, y0, x1, y1, ...]`` (cheaper to turn
+    into an array). When ``record`` is a list, one entry per step is appended:
     ``(source, i, j, cross)`` where source is ``"A"``, ``"B"`` or ``"AB"``, ``i``/``j`` the
     edge indices compared (None once a list is exhausted) and ``cross`` the sign of
     ``a_i x b_j`` that decided (None when the half-planes or exhaustion decided).
     """
-    xs = _cross_float if kind == FLOAT else _cross_exact
     na = len(A)
     nb = len(B)
     ea = na if na > 1 else 0
     eb = nb if nb > 1 else 0
+    A2 = A + A[:1]
+    B2 = B + B[:1]
+    fl = kind == FLOAT
     i = j = 0
-    a0 = A[0]
-    b0 = B[0]
-    out = [(a0[0] + b0[0], a0[1] + b0[1])]
-    while i < ea or j < eb:
-        c = None
-        if i == ea:
-            step = 1
-        elif j == eb:
-            step = -1
-        elif (i >= sa) != (j >= sb):
-            step = 1 if i >= sa else -1
-        else:
-            c = xs(a0, A[i + 1] if i + 1 < na else A[0], b0, B[j + 1] if j + 1 < nb else B[0])
-            step = -c
-        if record is not None:
-            src = "A" if step < 0 else "B" if step > 0 else "AB"
-            record.append((src, i if i < ea else None, j if j < eb else None, c))
-        if step <= 0:
-            i += 1
-            a0 = A[i] if i < na else A[0]
-        if step >= 0:
-            j += 1
-            b0 = B[j] if j < nb else B[0]
-        if i < ea or j < eb:
-            out.append((a0[0] + b0[0], a0[1] + b0[1]))
-    return out
+    ax, ay = A[0]
+    bx, by = B[0]
+    out = [ax + bx, ay + by]
+    append = out.append
+    # Every upper-half-plane edge precedes every lower one, so merge the two halves in
+    # turn: inside a half only the cross product decides.
+    for ie, je in ((min(sa, ea), min(sb, eb)), (ea, eb)):
+        while i < ie or j < je:
+            c = None
+            if i == ie:
+                step = 1
+            elif j == je:
+                step = -1
+            else:
+                a1x, a1y = A2[i + 1]
+                b1x, b1y = B2[j + 1]
+                ux = a1x - ax
+                uy = a1y - ay
+                vx = b1x - bx
+                vy = b1y - by
+                if fl:
+                    lft = ux * vy
+                    rgt = uy * vx
+                    d = lft - rgt
+                    if abs(d) <= ERRBOUND * (abs(lft) + abs(rgt)):
+                        d = _cross_float((ax, ay), (a1x, a1y), (bx, by), (b1x, b1y))
+                else:
+                    d = ux * vy - uy * vx
+                c = (d > 0) - (d < 0)
+                step = -c
+            if record is not None:
+                src = "A" if step < 0 else "B" if step > 0 else "AB"
+                record.append((src, i if i < ea else None, j if j < eb else None, c))
+            if step <= 0:
+                i += 1
+                ax, ay = A2[i]
+            if step >= 0:
+                j += 1
+                bx, by = B2[j]
+            append(ax + bx)
+            append(ay + by)
+    if len(out) > 2:
+        del out[-2:]  # the last step returned to the start vertex
+    if flat:
+        return out
+    return list(zip(out[::2], out[1::2]))
 
 
 def _py_hull(pts: list, kind: str) -> list:
@@ -201,6 +287,21 @@ def _py_hull(pts: list, kind: str) -> list:
         h.append(p)
     h.pop()
     return h
+
+
+def _flat_to_array(flat: list, kind: str) -> np.ndarray:
+    """A flat ``[x0, y0, x1, y1, ...]`` list to an (n, 2) array of the kind's dtype."""
+    if kind == FLOAT:
+        out = np.array(flat, dtype=np.float64).reshape(-1, 2)
+        if not np.isfinite(out).all():
+            raise OverflowGeometryError("result overflows float64 (a coordinate is infinite)")
+        return out
+    if kind == INT:
+        try:
+            return np.array(flat, dtype=np.int64).reshape(-1, 2)
+        except OverflowError:
+            pass
+    return _to_array(list(zip(flat[::2], flat[1::2])), kind)
 
 
 def _to_array(pts: list, kind: str) -> np.ndarray:
@@ -231,17 +332,41 @@ def _kernels():
     return _kernels
 
 
-def _fits_kernel(arr: np.ndarray, kind: str) -> bool:
+def _fits_kernel(arr: np.ndarray, kind: str, name: str) -> bool:
+    """True when the kernels decide exactly on ``arr`` (see ``_kernels``); raises for a
+    non-finite float."""
     if arr.shape[0] == 0:
         return True
     if kind == INT:
-        return int(np.abs(arr).max()) <= _I_HI if arr.dtype == np.int64 else False
-    a = np.abs(arr)
-    hi = a.max()
-    if hi > _F_HI:
-        return False
-    nz = a[a != 0]
-    return nz.size == 0 or nz.min() >= _F_LO
+        if arr.dtype != np.int64:
+            return False
+        code, row = _kernels().check_range(arr, False, _I_HI, 0)
+    else:
+        code, row = _kernels().check_range(arr, True, _F_HI, _F_LO)
+    if code == 1:
+        from .errors import NonFiniteError
+
+        raise NonFiniteError(
+            f"{name}: vertex {row} has a non-finite coordinate "
+            f"({float(arr[row, 0])!r}, {float(arr[row, 1])!r})"
+        )
+    return code == 0
+
+
+def _normalize_array(data: np.ndarray, kind: str, name: str) -> tuple[np.ndarray | None, int]:
+    """Kernel normalization: (normalized vertex indices, split); raises NotConvexError.
+
+    Returns ``(None, 0)`` when the values need the exact Python path."""
+    n = data.shape[0]
+    idx = np.empty(n, np.int64)
+    k, split, code, v = _kernels().normalize_single(
+        _pred_view(data, kind), np.empty(n, np.int64), np.empty(n, np.int8), idx
+    )
+    if code == _RANGE:
+        return None, 0
+    if code:
+        _raise_kernel_error(code, 0, int(v), (name,))
+    return idx[:k], split
 
 
 def _pred_view(arr: np.ndarray, kind: str) -> np.ndarray:
@@ -251,9 +376,16 @@ def _pred_view(arr: np.ndarray, kind: str) -> np.ndarray:
 def _prepare(obj: Any, name: str, tiny: int = TINY) -> tuple[Any, str, bool]:
     """Coerce; route to the list form when the kernels cannot be exact on the values."""
     data, kind, is_list = coerce(obj, name, tiny)
-    if not is_list and not _fits_kernel(data, kind):
+    if not is_list and kind == INT and not _fits_kernel(data, kind, name):
         return [tuple(r) for r in data.tolist()], kind, True
+    # float arrays: the kernels' first pass checks finiteness and range (code _RANGE)
     return data, kind, is_list
+
+
+def _range_fallback(data: np.ndarray, kind: str, name: str) -> list:
+    """After a kernel reported _RANGE: raise for non-finite input, else the exact list."""
+    _fits_kernel(data, kind, name)
+    return [tuple(r) for r in data.tolist()]
 
 
 def _unify(da: Any, ka: str, la: bool, db: Any, kb: str, lb: bool):
@@ -332,10 +464,10 @@ def normalize(p: ArrayLike2, *, hull: bool = False) -> Polygon:
         return _to_array(q, kind)
     if hull:
         return convex_hull(data)
-    K = _kernels()
-    idx, _, code, v = K.normalize_single(_pred_view(data, kind))
-    if code:
-        _raise_kernel_error(code, 0, int(v), ("p",))
+    idx, _ = _normalize_array(data, kind, "p")
+    if idx is None:
+        q, _, _ = _py_normalize(_range_fallback(data, kind, "p"), kind, "p")
+        return _to_array(q, kind)
     return data[idx]
 
 
@@ -348,7 +480,16 @@ def _check_convex(p: ArrayLike2, name: str) -> bool:
         except NotConvexError:
             return False
         return True
-    return not _kernels().normalize_single(_pred_view(data, kind))[2]
+    try:
+        idx, _ = _normalize_array(data, kind, name)
+    except NotConvexError:
+        return False
+    if idx is None:
+        try:
+            _py_normalize(_range_fallback(data, kind, name), kind, name)
+        except NotConvexError:
+            return False
+    return True
 
 
 def is_convex(p: ArrayLike2) -> bool:
@@ -386,13 +527,15 @@ def convex_hull(points: ArrayLike2) -> Polygon:
     if is_list:
         q, _, _ = _py_normalize(_py_hull(data, kind), kind, "points")
         return _to_array(q, kind)
+    if kind == FLOAT and not _fits_kernel(data, kind, "points"):
+        pts = _range_fallback(data, kind, "points")
+        return _to_array(_py_normalize(_py_hull(pts, kind), kind, "points")[0], kind)
     pf = _pred_view(data, kind)
     order = np.lexsort((pf[:, 1], pf[:, 0]))
-    K = _kernels()
-    h = K.convex_hull_sorted(pf, order)
+    h = _kernels().convex_hull_sorted(pf, order)
     if h.size == 0:
         h = order[:1]
-    idx, _, code, v = K.normalize_single(np.ascontiguousarray(pf[h]))
+    idx, _ = _normalize_array(data[h], kind, "points")
     return data[h[idx]]
 
 
@@ -416,9 +559,7 @@ def signed_area(p: ArrayLike2) -> float:
     if is_list:
         pts = data
         if kind == FLOAT:
-            terms = [
-                x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])
-            ]
+            terms = [x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])]
             return math.fsum(terms) / 2.0
         s = sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]))
         return float(s) / 2.0
@@ -430,6 +571,16 @@ def signed_area(p: ArrayLike2) -> float:
     x = data[:, 0].astype(np.float64)
     y = data[:, 1].astype(np.float64)
     return math.fsum(x * np.roll(y, -1) - np.roll(x, -1) * y) / 2.0
+
+
+def _sum_lists(A: list, B: list, kind: str, hull: bool) -> Polygon:
+    """The pure-Python path of :func:`minkowski_sum` (tiny or exact inputs)."""
+    if hull:
+        A = _py_hull(A, kind)
+        B = _py_hull(B, kind)
+    qa, _, sa = _py_normalize(A, kind, "a")
+    qb, _, sb = _py_normalize(B, kind, "b")
+    return _flat_to_array(_py_merge(qa, sa, qb, sb, kind, flat=True), kind)
 
 
 def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygon:
@@ -486,20 +637,28 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
     db, kb, lb = _prepare(b, "b")
     A, B, kind, is_list = _unify(da, ka, la, db, kb, lb)
     if is_list:
-        if hull:
-            A = _py_hull(A, kind)
-            B = _py_hull(B, kind)
-        qa, _, sa = _py_normalize(A, kind, "a")
-        qb, _, sb = _py_normalize(B, kind, "b")
-        return _to_array(_py_merge(qa, sa, qb, sb, kind), kind)
+        return _sum_lists(A, B, kind, hull)
     if hull:
         A = convex_hull(A)
         B = convex_hull(B)
-    K = _kernels()
-    out, code, which, v = K.sum_single(_pred_view(A, kind), A, _pred_view(B, kind), B)
+    na, nb = A.shape[0], B.shape[0]
+    out = np.empty((na + nb, 2), A.dtype)
+    k, code, which, v = _kernels().sum_single(
+        _pred_view(A, kind),
+        A,
+        _pred_view(B, kind),
+        B,
+        np.empty(na, np.int64),
+        np.empty(nb, np.int64),
+        np.empty(max(na, nb), np.int64),
+        np.empty(max(na, nb), np.int8),
+        out,
+    )
+    if code == _RANGE:
+        return _sum_lists(_range_fallback(A, kind, "a"), _range_fallback(B, kind, "b"), kind, False)
     if code:
         _raise_kernel_error(code, which, int(v), ("a", "b"))
-    return out
+    return out[:k] if 2 * k >= na + nb else out[:k].copy()
 
 
 def translate(p: ArrayLike2, v: Any) -> Polygon:

@@ -86,7 +86,9 @@ def parse_geometry(text: str, name: str = "input") -> Any:
         try:
             data = json.loads(s)
         except json.JSONDecodeError as exc:
-            raise InputFormatError(f"{name}: not valid JSON ({exc.msg} at line {exc.lineno})") from None
+            raise InputFormatError(
+                f"{name}: not valid JSON ({exc.msg} at line {exc.lineno})"
+            ) from None
         if isinstance(data, list):
             return _json_points(data, name)
         return _from_geojson(data, name)
@@ -95,9 +97,7 @@ def parse_geometry(text: str, name: str = "input") -> Any:
     try:
         geom = shapely.from_wkt(s)
     except Exception:  # shapely raises its own GEOSException subclasses
-        raise InputFormatError(
-            f"{name}: not a JSON point list, GeoJSON or WKT geometry"
-        ) from None
+        raise InputFormatError(f"{name}: not a JSON point list, GeoJSON or WKT geometry") from None
     return _simplify_geom(geom, name)
 
 
@@ -367,7 +367,9 @@ def _svg(geom: Any) -> str:
             )
         elif p.geom_type == "LineString":
             pts = " ".join(f"{x},{-y}" for x, y in p.coords)
-            parts.append(f'<polyline points="{pts}" fill="none" stroke="#1f4e79" stroke-width="{stroke}"/>')
+            parts.append(
+                f'<polyline points="{pts}" fill="none" stroke="#1f4e79" stroke-width="{stroke}"/>'
+            )
         else:
             parts.append(f'<circle cx="{p.x}" cy="{-p.y}" r="{2 * stroke}" fill="#1f4e79"/>')
     body = "\n  ".join(parts)

@@ -152,7 +152,9 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
         return np.sign(d).astype(np.int8)
     if all(v.dtype.kind == "f" for v in (p, q, r)) or (
         all(v.dtype.kind in "iuf" for v in (p, q, r))
-        and not any(v.dtype.kind in "iu" and int(np.abs(v).max(initial=0)) > (1 << 53) for v in (p, q, r))
+        and not any(
+            v.dtype.kind in "iu" and int(np.abs(v).max(initial=0)) > (1 << 53) for v in (p, q, r)
+        )
     ):
         pf, qf, rf = (v.astype(np.float64) for v in (p, q, r))
         with np.errstate(all="ignore"):
@@ -166,6 +168,9 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
             out[k] = _cross_fraction(*(tuple(float(c) for c in v[k]) for v in (pf, qf, pf, rf)))
         return out
     return np.array(
-        [orient(tuple(a), tuple(b), tuple(c)) for a, b, c in zip(p.tolist(), q.tolist(), r.tolist())],
+        [
+            orient(tuple(a), tuple(b), tuple(c))
+            for a, b, c in zip(p.tolist(), q.tolist(), r.tolist())
+        ],
         dtype=np.int8,
     )
