@@ -8,6 +8,7 @@
 from __future__ import annotations
 
 from . import errors
+from .animation import animate
 from .batch import Ragged, minkowski_sum_many
 from .convex import (
     convex_hull,
@@ -20,6 +21,7 @@ from .convex import (
     translate,
 )
 from .errors import GeometryError
+from .trace import MergeTrace, merge_trace
 
 __version__ = "0.1.0"
 
@@ -36,5 +38,8 @@ __all__ = [
     "translate",
     "reflect",
     "cspace_obstacle",
+    "merge_trace",
+    "MergeTrace",
+    "animate",
     "__version__",
 ]

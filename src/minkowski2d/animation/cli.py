@@ -1,0 +1,137 @@
+"""``minkowski2d animate`` and ``minkowski2d serve`` (a plugin of :mod:`minkowski2d.cli`)."""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from pathlib import Path
+from typing import Any
+
+__all__ = ["add_parser", "read_polygon"]
+
+_INLINE = re.compile(r"^[\s\d.,;:()\[\]eE+\-/]+$")
+
+
+def read_polygon(arg: str, name: str) -> Any:
+    """A polygon from a file (JSON, GeoJSON, WKT, CGAL .dat), ``-`` for standard input,
+    or written inline: ``"0,0 2,0 0,2"`` or ``"[[0,0],[2,0],[0,2]]"``.
+
+    Examples
+    --------
+    >>> read_polygon("(0, 0), (2, 0), (0, 2)", "A")
+    [(0, 0), (2, 0), (0, 2)]
+    """
+    if arg != "-" and not Path(arg).exists() and _INLINE.match(arg) and re.search(r"\d", arg):
+        from .page import parse_points
+
+        return parse_points(arg, name)
+    from ..io import read_geometry
+
+    return read_geometry(arg)
+
+
+def _cli_hint(exc: Exception) -> Exception:
+    """The same error, pointing to --hull instead of the Python keyword."""
+    from ..errors import NotConvexError
+
+    msg = str(exc).replace("pass hull=True", "use --hull")
+    if isinstance(exc, NotConvexError):
+        return NotConvexError(msg, exc.vertex)
+    return exc
+
+
+def _cspace_args(args: argparse.Namespace) -> dict:
+    return {
+        "obstacle": None if args.obstacle is None else read_polygon(args.obstacle, "obstacle"),
+        "robot": None if args.robot is None else read_polygon(args.robot, "robot"),
+        "hull": args.hull,
+    }
+
+
+def _cmd_animate(args: argparse.Namespace) -> int:
+    from ..cli import emit
+    from ..errors import GeometryError
+    from .page import render
+
+    a = read_polygon(args.a, "A")
+    b = read_polygon(args.b, "B")
+    try:
+        page = render(a, b, title=args.title, **_cspace_args(args))
+    except GeometryError as exc:
+        raise _cli_hint(exc) from None
+    inputs = [p for p in (args.a, args.b, args.obstacle, args.robot) if p is not None]
+    emit(page, args.output, inputs)
+    if args.output not in (None, "-"):
+        print(Path(args.output).resolve())
+    return 0
+
+
+def _cmd_serve(args: argparse.Namespace) -> int:
+    from ..cli import CLIError
+    from ..errors import GeometryError
+    from .page import SEED_A, SEED_B
+    from .server import AnimationServer
+
+    if (args.a is None) != (args.b is None):
+        raise CLIError("serve: give both polygons A and B, or neither (for the seed's example)")
+    a = SEED_A if args.a is None else read_polygon(args.a, "A")
+    b = SEED_B if args.b is None else read_polygon(args.b, "B")
+    if not 0 <= args.port <= 65535:
+        raise CLIError(f"--port {args.port}: not a port number (0 picks a free one)")
+    try:
+        srv = AnimationServer(a, b, port=args.port, verbose=args.verbose, **_cspace_args(args))
+    except GeometryError as exc:
+        raise _cli_hint(exc) from None
+    except OSError as exc:
+        raise CLIError(
+            f"cannot listen on 127.0.0.1:{args.port} ({exc.strerror}); try --port 0"
+        ) from None
+    print(f"Serving the editable animation at {srv.url}  (Ctrl-C to stop)", flush=True)
+    try:
+        srv.serve_forever()
+    except KeyboardInterrupt:
+        print("\nstopped", file=sys.stderr, flush=True)
+    finally:
+        srv.server_close()
+    return 0
+
+
+def add_parser(subparsers: Any) -> None:
+    """Register ``animate`` and ``serve`` on the ``minkowski2d`` command's subparsers."""
+    poly_help = "file (JSON, GeoJSON, WKT, .dat), - for stdin, or inline like '0,0 2,0 0,2'"
+
+    p = subparsers.add_parser(
+        "animate",
+        help="write the interactive animation of the edge merge A ⊕ B (one HTML file)",
+        description="Write a self-contained HTML page that steps through the merge of A "
+        "and B, with the configuration-space scene obstacle ⊕ (−robot). No network needed.",
+    )
+    p.add_argument("a", help=f"convex polygon A: {poly_help}")
+    p.add_argument("b", help=f"convex polygon B: {poly_help}")
+    p.add_argument(
+        "-o", "--output", default="animation.html",
+        help="the page to write (default: animation.html; - for standard output)",
+    )
+    _add_common(p)
+    p.add_argument("--title", help="page title")
+    p.set_defaults(func=_cmd_animate)
+
+    p = subparsers.add_parser(
+        "serve",
+        help="serve the animation on 127.0.0.1 with editable polygons",
+        description="Serve the animation page in an editable mode on 127.0.0.1: drag or "
+        "type vertices and the server computes the new trace. Ctrl-C stops it.",
+    )
+    p.add_argument("a", nargs="?", help=f"polygon A (default: the seed's triangle): {poly_help}")
+    p.add_argument("b", nargs="?", help=f"polygon B (default: the seed's square): {poly_help}")
+    p.add_argument("--port", type=int, default=8765, help="port (default 8765; 0 picks a free one)")
+    p.add_argument("--verbose", action="store_true", help="log each request")
+    _add_common(p)
+    p.set_defaults(func=_cmd_serve)
+
+
+def _add_common(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--obstacle", help="obstacle for the configuration-space scene (default: A)")
+    p.add_argument("--robot", help="robot for the configuration-space scene (default: B)")
+    p.add_argument("--hull", action="store_true", help="use the convex hulls of A and B")
