@@ -35,7 +35,8 @@ def _cli_hint(exc: Exception) -> Exception:
     """The same error, pointing to --hull instead of the Python keyword."""
     from ..errors import NotConvexError
 
-    msg = str(exc).replace("pass hull=True", "use --hull")
+    msg = str(exc).replace("(pass hull=True to", "(use --hull to")
+    msg = msg.replace("(or use the convex hull)", "(use --hull to use the convex hull)")
     if isinstance(exc, NotConvexError):
         return NotConvexError(msg, exc.vertex)
     return exc

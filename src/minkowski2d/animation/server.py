@@ -10,6 +10,7 @@ runs here, in Python; the page only plays back what it is sent.
 from __future__ import annotations
 
 import json
+import sys
 import threading
 from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
@@ -62,6 +63,7 @@ class _Handler(BaseHTTPRequestHandler):
     server: AnimationServer
     server_version = "minkowski2d"
     protocol_version = "HTTP/1.1"
+    timeout = 60  # seconds an idle keep-alive connection is kept
 
     def log_message(self, format: str, *args: Any) -> None:  # noqa: A002
         if self.server.verbose:
@@ -166,6 +168,12 @@ class AnimationServer(ThreadingHTTPServer):
         self._data = page_data(a, b, obstacle=obstacle, robot=robot, hull=hull)
         self.verbose = verbose
         super().__init__((HOST, port), _Handler)
+
+    def handle_error(self, request: Any, client_address: Any) -> None:
+        # a browser closing a kept-alive connection is not an error worth a traceback
+        if isinstance(sys.exc_info()[1], (ConnectionError, TimeoutError)):
+            return
+        super().handle_error(request, client_address)
 
     @property
     def url(self) -> str:
