@@ -373,9 +373,9 @@ def _pred_view(arr: np.ndarray, kind: str) -> np.ndarray:
     return np.ascontiguousarray(arr, dtype=np.float64)
 
 
-def _prepare(obj: Any, name: str, tiny: int = TINY) -> tuple[Any, str, bool]:
+def _prepare(obj: Any, name: str, tiny: int | None = None) -> tuple[Any, str, bool]:
     """Coerce; route to the list form when the kernels cannot be exact on the values."""
-    data, kind, is_list = coerce(obj, name, tiny)
+    data, kind, is_list = coerce(obj, name, TINY if tiny is None else tiny)
     if not is_list and kind == INT and not _fits_kernel(data, kind, name):
         return [tuple(r) for r in data.tolist()], kind, True
     # float arrays: the kernels' first pass checks finiteness and range (code _RANGE)
@@ -388,10 +388,15 @@ def _range_fallback(data: np.ndarray, kind: str, name: str) -> list:
     return [tuple(r) for r in data.tolist()]
 
 
-def _unify(da: Any, ka: str, la: bool, db: Any, kb: str, lb: bool):
+def _unify(da: Any, ka: str, la: bool, db: Any, kb: str, lb: bool, names=("a", "b")):
     """Bring two operands to a common kind and form."""
     kind = ka if ka == kb else (EXACT if EXACT in (ka, kb) else FLOAT)
     if la or lb or kind == EXACT:
+        # an array about to leave the kernels' path still needs its finiteness check
+        if not la and ka == FLOAT:
+            _fits_kernel(da, ka, names[0])
+        if not lb and kb == FLOAT:
+            _fits_kernel(db, kb, names[1])
         A = da if la else [tuple(r) for r in da.tolist()]
         B = db if lb else [tuple(r) for r in db.tolist()]
         if ka != kind:
@@ -676,7 +681,7 @@ def translate(p: ArrayLike2, v: Any) -> Polygon:
         from .errors import ShapeError
 
         raise ShapeError("v: expected one (x, y) vector")
-    P, V, kind, is_list = _unify(data, kind, is_list, dv, kv, lv)
+    P, V, kind, is_list = _unify(data, kind, is_list, dv, kv, lv, ("p", "v"))
     if is_list:
         vx, vy = V[0]
         return _to_array([(x + vx, y + vy) for x, y in P], kind)
