@@ -157,7 +157,9 @@ def _tick_text(t: float, step: float) -> str:
     return f"{t:.3g}"
 
 
-def _view(points: list, kind: str, hold: list | None = None, px: int = _SCENE_PX) -> dict:
+def _view(
+    points: list, kind: str, hold: list | None = None, px: int = _SCENE_PX, pad: float = 1.3
+) -> dict:
     """A square view around ``points`` (floats), with grid ticks and a snap unit.
 
     With ``hold`` (a box ``[x0, y0, x1, y1]``) that box is kept as it is when every
@@ -183,7 +185,7 @@ def _view(points: list, kind: str, hold: list | None = None, px: int = _SCENE_PX
             size = max(abs(x0), abs(y0)) * 0.2 or 1.0
             if kind != "float":
                 size = max(size, 2.0)
-        size = max(size * 1.3, 1e-290)
+        size = max(size * pad, 1e-290)
         vx0 = (x0 + x1) / 2 - size / 2
         vy0 = (y0 + y1) / 2 - size / 2
     step = _nice(size / 8)
@@ -293,6 +295,7 @@ def page_data(
     robot: ArrayLike2 | None = None,
     hull: bool = False,
     hold_view: dict | None = None,
+    roomy: bool = False,
 ) -> dict:
     """Everything the page draws, as JSON-ready data.
 
@@ -308,6 +311,9 @@ def page_data(
     hold_view : {"a": [x0, y0, x1, y1], "b": [...]}, optional
         Keep the view boxes of the pictures of A and B (grown if needed), so that a
         vertex being dragged stays under the pointer.
+    roomy : bool, default False
+        Leave room around A and B in their pictures, to drag vertices outwards (the
+        editable page).
 
     Examples
     --------
@@ -323,8 +329,9 @@ def page_data(
     d = t.to_dict()
     kind = t.kind
     hold = hold_view if isinstance(hold_view, dict) else {}
-    v_a = _view(t.a, kind, _box(hold.get("a")), _SMALL_PX)
-    v_b = _view(t.b, kind, _box(hold.get("b")), _SMALL_PX)
+    pad = 2.2 if roomy else 1.3
+    v_a = _view(t.a, kind, _box(hold.get("a")), _SMALL_PX, pad)
+    v_b = _view(t.b, kind, _box(hold.get("b")), _SMALL_PX, pad)
     v_sum = _view(list(t.result.tolist()) or [t.start], kind)
     if obstacle is None and robot is None:
         cs = _cspace(t.a, t.b, "A", "B")

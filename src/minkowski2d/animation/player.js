@@ -184,7 +184,8 @@
     $("info-edge").textContent = "Took " + st.taken.map(edgeName).join(" and ") + (st.taken.length > 1 ? ", together." : ".");
     $("info-why").textContent = "Why: " + st.why + ".";
     $("info-vertex").textContent = k === n
-      ? "Back at the start " + st.vertex_text + ": the boundary is closed. A \u2295 B has " + T.result.length + " vertices."
+      ? "Back at the start " + st.vertex_text + ": the boundary is closed. A \u2295 B has " + T.result.length +
+        " vertices: " + T.result_text.join(", ") + "."
       : "Reached vertex " + st.vertex_text + ".";
   }
 
@@ -312,7 +313,11 @@
   $("btn-reset").addEventListener("click", reset);
   $("btn-run").addEventListener("click", toggleRun);
   $("speed").addEventListener("change", function () { if (S.timer) setRunning(true); });
-  $("scrub").addEventListener("input", function () { setRunning(false); show(parseInt(this.value, 10)); });
+  $("scrub").addEventListener("input", function () {
+    var k = parseInt(this.value, 10);  // read first: pausing redraws the controls
+    setRunning(false);
+    show(k);
+  });
   $("cs-pos").addEventListener("input", drawCspace);
 
   function typing(t) {
@@ -361,12 +366,14 @@
           D = res.j; D.editable = editable; D.api = api;
           showError(null);
           $("edit-status").textContent = "Updated: " + N() + " steps.";
-          if (S.drag) S.drag.view = S.drag.src === "A" ? D.a_view : D.b_view; else fillEditor();
+          $("edit-status").className = "status";
+          if (!S.drag) fillEditor();
           show(keepEnd ? N() : S.k);
           drawCspace();
         } else {
           showError(res.j.error || "the server refused the input");
           $("edit-status").textContent = "Not applied: " + (res.j.error || "refused") + ". The last good polygons are kept.";
+          $("edit-status").className = "status bad";
           if (!S.drag) show(S.k);
         }
       })
@@ -421,6 +428,7 @@
   function dragMove(e) {
     if (!S.drag) return;
     var svg = $(S.drag.svg), q = svgPoint(svg, e), m = mapper(S.drag.view);
+    // inside the picture: its view is held while dragging (the server then keeps it)
     S.drag.px = Math.max(0, Math.min(S.drag.view.px, q[0]));
     S.drag.py = Math.max(0, Math.min(S.drag.view.px, q[1]));
     var w = m.inv(S.drag.px, S.drag.py);
@@ -432,12 +440,15 @@
     var a = S.drag.src === "A" ? poly.join("\n") : S.drag.otherA;
     var b = S.drag.src === "B" ? poly.join("\n") : S.drag.otherB;
     drawInputs(S.k);
-    request(body(a, b, { a: D.a_view.box, b: D.b_view.box }));
+    S.drag.lastBody = body(a, b, { a: D.a_view.box, b: D.b_view.box });
+    request(S.drag.lastBody);
   }
 
   function dragEnd() {
     if (!S.drag) return;
+    var last = S.drag.lastBody;
     S.drag = null;
+    if (last) { last.view = null; request(last); }  // the final polygons, views fitted anew
     window.removeEventListener("pointermove", dragMove);
     window.removeEventListener("pointerup", dragEnd);
     window.removeEventListener("pointercancel", dragEnd);

@@ -56,6 +56,7 @@ def polygons_from_request(body: dict) -> dict:
         "robot": _polygon(body.get("robot"), "robot"),
         "hull": bool(body.get("hull", False)),
         "hold_view": view,
+        "roomy": True,
     }
 
 
@@ -165,7 +166,7 @@ class AnimationServer(ThreadingHTTPServer):
         verbose: bool = False,
     ) -> None:
         # compute (and validate) the first page before binding the port
-        self._data = page_data(a, b, obstacle=obstacle, robot=robot, hull=hull)
+        self._data = page_data(a, b, obstacle=obstacle, robot=robot, hull=hull, roomy=True)
         self.verbose = verbose
         super().__init__((HOST, port), _Handler)
 
