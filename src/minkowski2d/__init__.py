@@ -21,6 +21,7 @@ from .convex import (
     translate,
 )
 from .errors import GeometryError
+from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
 from .trace import MergeTrace, merge_trace
 
 __version__ = "0.1.0"
@@ -41,5 +42,8 @@ __all__ = [
     "merge_trace",
     "MergeTrace",
     "animate",
+    "minkowski_sum_general",
+    "convex_decomposition",
+    "minkowski_difference",
     "__version__",
 ]
