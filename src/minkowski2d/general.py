@@ -150,15 +150,14 @@ def _operand(obj: Any, name: str) -> _Operand:
             raise ShapeError(f"{name}: the polygons have no area")
         g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
         return _Operand(_check_geom(g, name), None, name)
-    ring = _float_coords(obj, name)
-    if len(ring) >= 3:
-        poly = shapely.Polygon(ring)
-        if poly.area > 0:
-            return _Operand(_check_geom(poly, name), None, name)
-    # a point, a segment, or collinear points: a degenerate convex set
     from .convex import convex_hull
 
-    return _Operand(None, np.asarray(convex_hull(ring), dtype=np.float64), name)
+    ring = _float_coords(obj, name)
+    hull = np.asarray(convex_hull(ring), dtype=np.float64)
+    if len(hull) <= 2:
+        # a point, a segment, or collinear points: a degenerate convex set
+        return _Operand(None, hull, name)
+    return _Operand(_check_geom(shapely.Polygon(ring), name), None, name)
 
 
 def _flat_geom(flat: np.ndarray) -> Any:

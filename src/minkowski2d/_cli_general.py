@@ -1,0 +1,94 @@
+"""CLI plugin: ``sum-general``, ``erode`` and ``decompose`` (non-convex polygons, holes).
+
+Registered by :mod:`minkowski2d.cli` through :func:`add_parser`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+
+def add_parser(subparsers: argparse._SubParsersAction) -> None:
+    """Add the ``sum-general``, ``erode`` and ``decompose`` subcommands."""
+    from .cli import _add_io_options
+    from .general import DECOMPOSITIONS, SUM_METHODS
+
+    p = subparsers.add_parser(
+        "sum-general",
+        help="Minkowski sum of non-convex polygons (holes allowed)",
+        description="A ⊕ B for simple polygons with holes; the result keeps its holes.",
+    )
+    p.add_argument("a", help="polygon A (file or -)")
+    p.add_argument("b", help="polygon B (file or -)")
+    p.add_argument("--method", choices=SUM_METHODS, default="decomposition")
+    p.add_argument(
+        "--decomposition",
+        choices=DECOMPOSITIONS,
+        default="hertel-mehlhorn",
+        help="convex pieces for --method decomposition",
+    )
+    _add_io_options(p)
+    p.set_defaults(func=_cmd_sum_general)
+
+    p = subparsers.add_parser(
+        "erode",
+        help="Minkowski difference (erosion) A ⊖ B = {c : c + B inside A}",
+        description="The translations c that put B wholly inside A (not A ⊕ (−B), "
+        "which is what 'inflate' computes). An empty result is written as an empty "
+        "polygon, with a note on standard error.",
+    )
+    p.add_argument("a", help="polygon A, the region (file or -)")
+    p.add_argument("b", help="polygon B, the shape that must fit (file or -)")
+    _add_io_options(p)
+    p.set_defaults(func=_cmd_erode)
+
+    p = subparsers.add_parser(
+        "decompose",
+        help="split a polygon (holes allowed) into convex pieces",
+        description="Convex pieces as a MultiPolygon (json/geojson/wkt/svg).",
+    )
+    p.add_argument("polygon", help="the polygon (file or -)")
+    p.add_argument("--method", choices=DECOMPOSITIONS, default="hertel-mehlhorn")
+    _add_io_options(p)
+    p.set_defaults(func=_cmd_decompose)
+
+
+def _cmd_sum_general(args: argparse.Namespace) -> int:
+    from .cli import emit, output_format
+    from .general import minkowski_sum_general
+    from .io import format_geometry, read_geometry
+
+    a = read_geometry(args.a)
+    b = read_geometry(args.b)
+    result = minkowski_sum_general(a, b, method=args.method, decomposition=args.decomposition)
+    emit(format_geometry(result, output_format(args)), args.output, [args.a, args.b])
+    return 0
+
+
+def _cmd_erode(args: argparse.Namespace) -> int:
+    from .cli import emit, output_format
+    from .general import minkowski_difference
+    from .io import format_geometry, read_geometry
+
+    a = read_geometry(args.a)
+    b = read_geometry(args.b)
+    result = minkowski_difference(a, b)
+    if result.is_empty:
+        print("minkowski2d: note: B fits nowhere inside A; the erosion is empty", file=sys.stderr)
+    emit(format_geometry(result, output_format(args)), args.output, [args.a, args.b])
+    return 0
+
+
+def _cmd_decompose(args: argparse.Namespace) -> int:
+    import shapely
+
+    from .cli import emit, output_format
+    from .general import convex_decomposition
+    from .io import format_geometry, read_geometry
+
+    pieces = convex_decomposition(read_geometry(args.polygon), method=args.method)
+    polys = [p for p in pieces.to_shapely() if p.geom_type == "Polygon"]
+    geom = shapely.MultiPolygon(polys) if polys else shapely.MultiPolygon()
+    emit(format_geometry(geom, output_format(args)), args.output, [args.polygon])
+    return 0
