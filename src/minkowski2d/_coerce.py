@@ -92,6 +92,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
     """
     out = []
     kind = INT
+    nfloat = 0
     append = out.append
     for k, p in enumerate(seq):
         try:
@@ -101,41 +102,45 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
                 f"{name}: vertex {k} is {p!r}, not an (x, y) pair; expected shape (n, 2)"
             ) from None
         tx = type(x)
-        ty = type(y)
-        if tx is int and ty is int:
-            append((x, y))
-            continue
-        if tx is float and ty is float:
-            if x - x != 0.0 or y - y != 0.0:
-                raise NonFiniteError(
-                    f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
-                )
-            kind = FLOAT if kind == INT else kind if kind == FLOAT else EXACT
-            append((x, y))
-            continue
+        if tx is type(y):
+            if tx is int:
+                append((x, y))
+                continue
+            if tx is float:
+                if (x - x) or (y - y):  # nan for inf and nan, 0.0 otherwise
+                    raise NonFiniteError(
+                        f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
+                    )
+                nfloat += 1
+                append((x, y))
+                continue
         kx = _kind_of_scalar(x, name, k)
         ky = _kind_of_scalar(y, name, k)
         kk = kx if _RANK[kx] >= _RANK[ky] else ky
-        if kk == FLOAT or (kx == FLOAT or ky == FLOAT):
+        if kx == FLOAT or ky == FLOAT:
             x = float(x)
             y = float(y)
-            if x - x != 0.0 or y - y != 0.0:
+            if (x - x) or (y - y):
                 raise NonFiniteError(
                     f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
                 )
-            kk = FLOAT
+            nfloat += 1
+            if kk != EXACT:
+                kk = INT  # counted in nfloat; the kind is settled below
         elif kk == INT:
             x = int(x)
             y = int(y)
         append((x, y))
         if _RANK[kk] > _RANK[kind]:
             kind = kk
+    if nfloat:
+        kind = EXACT if kind == EXACT else FLOAT
     if not out:
         raise EmptyGeometryError(f"{name}: empty input (no vertices)")
     if kind == EXACT:
         # A float mixed with Fractions: the floats are exact dyadic rationals, so keep exact.
         out = [(Fraction(x), Fraction(y)) for x, y in out]
-    elif kind == FLOAT:
+    elif kind == FLOAT and nfloat != len(out):
         out = [(float(x), float(y)) for x, y in out]
     return out, kind
 
