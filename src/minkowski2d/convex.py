@@ -460,7 +460,7 @@ def normalize(p: ArrayLike2, *, hull: bool = False) -> Polygon:
     Examples
     --------
     >>> import minkowski2d as mk
-    >>> mk.normalize([(0, 2), (2, 0), (0, 0), (1, 0)]).tolist()  # CW, collinear (1, 0)
+    >>> mk.normalize([(0, 2), (2, 0), (1, 0), (0, 0)]).tolist()  # CW, collinear (1, 0)
     [[0, 0], [2, 0], [0, 2]]
     """
     data, kind, is_list = _prepare(p, "p")
@@ -732,6 +732,6 @@ def cspace_obstacle(obstacle: ArrayLike2, robot: ArrayLike2, *, hull: bool = Fal
     --------
     >>> import minkowski2d as mk
     >>> mk.cspace_obstacle([(0, 0), (4, 0), (4, 4), (0, 4)], [(0, 0), (1, 0), (0, 1)]).tolist()
-    [[-1, -1], [4, -1], [4, 4], [0, 4], [-1, 3]]
+    [[0, -1], [4, -1], [4, 4], [-1, 4], [-1, 0]]
     """
     return minkowski_sum(obstacle, reflect(robot), hull=hull)

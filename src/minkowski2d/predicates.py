@@ -116,7 +116,7 @@ def orient(p: Any, q: Any, r: Any) -> int:
     --------
     >>> orient((0, 0), (1, 1), (2, 2))
     0
-    >>> orient((0.1, 0.1), (0.2, 0.2), (0.3, 0.3))  # not collinear as floats
+    >>> orient((0, 0.1), (1, 0.2), (2, 0.3))  # collinear in decimal, not as floats
     -1
     """
     return cross_sign(p, q, p, r)
