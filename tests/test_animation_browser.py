@@ -8,7 +8,9 @@ Screenshots are saved under ``test-artifacts/`` (git-ignored).
 from __future__ import annotations
 
 import json
+import math
 import os
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
@@ -387,3 +389,41 @@ def test_served_mode_drag_a_vertex(watched, server):
     assert page.input_value("#edit-a") == "\n".join(expected["a_text"])
     assert page.locator("#result li").all_inner_texts() == expected["result_text"]
     assert watched.errors == []
+
+
+REGULAR = [
+    (round(1000 * math.cos(2 * math.pi * k / 60)), round(1000 * math.sin(2 * math.pi * k / 60)))
+    for k in range(60)
+]
+
+
+@pytest.mark.parametrize(
+    "name,a,b",
+    [
+        ("points", [(3, 4)], [(1, -1)]),
+        ("point-square", [(0.5, 0.25)], SEED_B),
+        ("segments", [(0, 0), (2, 1)], [(0, 0), (-1, 3)]),
+        ("fractions", [(0, 0), (Fraction(1, 3), 0), (0, Fraction(2, 3))], SEED_B),
+        ("floats", [(0.1, 0.2), (0.7, 0.2), (0.3, 0.9)], [(1e-3, 0.0), (1.0, 1e-9), (0.5, 0.5)]),
+        ("regular60", REGULAR, [(0, 0), (300, 0), (300, 200), (0, 200)]),
+    ],
+)
+def test_degenerate_and_larger_inputs_play_to_the_end(browser, tmp_path, name, a, b):
+    t = mk.merge_trace(a, b).to_dict()
+    n = len(t["steps"])
+    path = mk.animate(a, b, path=tmp_path / f"{name}.html")
+    w = Watched(browser)
+    try:
+        page = w.open(path.resolve().as_uri())
+        assert page.inner_text("#counter") == f"Step 0 of {n}"
+        page.locator("#scrub").focus()
+        page.keyboard.press("End")
+        assert page.get_attribute("body", "data-step") == str(n)
+        assert page.locator("#result li").all_inner_texts() == t["result_text"]
+        page.keyboard.press("Home")
+        assert page.get_attribute("body", "data-step") == "0"
+        if name in ("points", "regular60"):
+            shot(page, f"animation-case-{name}.png")
+        assert w.errors == []
+    finally:
+        w.close()

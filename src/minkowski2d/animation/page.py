@@ -208,11 +208,14 @@ def _view(
     }
 
 
-def _edge_marks(P: list, size: float, prefix: str) -> list:
-    """Each edge of the normalized polygon ``P``: ends, label and label position."""
+def _edge_marks(P: list, size: float, prefix: str, px: int) -> list:
+    """Each edge of the normalized polygon ``P``: ends, label, label position, and whether
+    the label fits (edges shorter than about two labels' width go unlabelled unless they
+    are the ones being compared)."""
     n = len(P)
     if n == 1:
         return []
+    min_len = 26.0 * size / px  # world length of 26 pixels
     out = []
     for k in range(n):
         p = P[k]
@@ -228,6 +231,7 @@ def _edge_marks(P: list, size: float, prefix: str) -> list:
                 "to": _json_point(q),
                 "label": f"{prefix}{k}",
                 "label_at": [lab[0], lab[1]],
+                "label_fits": n <= 12 or math.hypot(dx, dy) >= min_len,
             }
         )
     return out
@@ -348,8 +352,8 @@ def page_data(
         "a_view": v_a,
         "b_view": v_b,
         "sum_view": v_sum,
-        "edges_a": _edge_marks(t.a, v_a["box"][2] - v_a["box"][0], "a"),
-        "edges_b": _edge_marks(t.b, v_b["box"][2] - v_b["box"][0], "b"),
+        "edges_a": _edge_marks(t.a, v_a["box"][2] - v_a["box"][0], "a", v_a["px"]),
+        "edges_b": _edge_marks(t.b, v_b["box"][2] - v_b["box"][0], "b", v_b["px"]),
         "icons_a": [_icon(e) for e in t.edges_a],
         "icons_b": [_icon(e) for e in t.edges_b],
         "hull": bool(hull),

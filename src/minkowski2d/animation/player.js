@@ -66,12 +66,12 @@
     v.ticks_x.forEach(function (t, i) {
       var x = m.X(t);
       el("line", { x1: x, y1: 0, x2: x, y2: px }, g);
-      if (i % every === 0) el("text", { x: x + 2, y: px - 3 }, g, v.labels_x[i]);
+      if (i % every === 0 && x < px - 28) el("text", { x: x + 2, y: px - 3 }, g, v.labels_x[i]);
     });
     v.ticks_y.forEach(function (t, i) {
       var y = m.Y(t);
       el("line", { x1: 0, y1: y, x2: px, y2: y }, g);
-      if (i % every === 0) el("text", { x: 2, y: y - 2 }, g, v.labels_y[i]);
+      if (i % every === 0 && y > 12) el("text", { x: 2, y: y - 2 }, g, v.labels_y[i]);
     });
     if (v.axis_x) el("line", { "class": "axis", x1: 0, y1: m.Y(0), x2: px, y2: m.Y(0) }, g);
     if (v.axis_y) el("line", { "class": "axis", x1: m.X(0), y1: 0, x2: m.X(0), y2: px }, g);
@@ -122,7 +122,9 @@
       g[5].forEach(function (e, idx) {
         var line = arrow(svg, m, e.from, e.to, edgeClass(src, idx, es), low + "-arr-" + low);
         el("title", null, line, e.label + " = " + T["edges_" + low + "_text"][idx]);
-        el("text", { x: m.X(e.label_at[0]), y: m.Y(e.label_at[1]), "class": "elabel " + low }, svg, e.label);
+        if (e.label_fits || es["now" + src][idx] || es["next" + src] === idx) {
+          el("text", { x: m.X(e.label_at[0]), y: m.Y(e.label_at[1]), "class": "elabel " + low }, svg, e.label);
+        }
       });
       g[3].forEach(function (p, idx) {
         var dot = el("circle", { cx: m.X(p[0]), cy: m.Y(p[1]), r: idx === 0 ? 5 : 3, "class": idx === 0 ? "vdot first" : "vdot" }, svg);
@@ -149,11 +151,17 @@
     }
     var start = T.start;
     el("circle", { cx: m.X(start[0]), cy: m.Y(start[1]), r: 6, "class": "start" }, svg);
-    el("text", { x: m.X(start[0]) + 8, y: m.Y(start[1]) + 16, "class": "vlabel" }, svg, "A[0]+B[0] = " + T.start_text);
+    var sright = m.X(start[0]) > 0.6 * m.view.px;
+    el("text", { x: m.X(start[0]) + (sright ? -8 : 8), y: m.Y(start[1]) + 18, "class": "vlabel" + (sright ? " end" : "") }, svg,
+      "A[0]+B[0] = " + T.start_text);
     var cur = k === 0 ? start : steps[k - 1].vertex;
     var curText = k === 0 ? T.start_text : steps[k - 1].vertex_text;
     el("circle", { cx: m.X(cur[0]), cy: m.Y(cur[1]), r: 5, "class": "cur" }, svg);
-    if (k > 0 && k < n) el("text", { x: m.X(cur[0]) + 8, y: m.Y(cur[1]) - 8, "class": "vlabel" }, svg, curText);
+    if (k > 0 && k < n) {
+      // keep the label inside the picture: to the left of the vertex on the right side
+      var right = m.X(cur[0]) > 0.6 * m.view.px;
+      el("text", { x: m.X(cur[0]) + (right ? -10 : 8), y: m.Y(cur[1]) - 8, "class": "vlabel" + (right ? " end" : "") }, svg, curText);
+    }
   }
 
   /* ---- text panels ---- */
@@ -207,6 +215,8 @@
         }, icon);
         li.appendChild(document.createTextNode(low + idx + " " + txt));
       });
+      var focus = ol.querySelector("li.now") || ol.querySelector("li.next");
+      if (focus && ol.scrollHeight > ol.clientHeight) ol.scrollTop = focus.offsetTop - 30;  // offsetParent is the list
     });
   }
 
@@ -225,8 +235,9 @@
       $("result-note").textContent = "Listed when the merge is complete (" + (n - k) + " more step" + (n - k === 1 ? "" : "s") + ").";
       return;
     }
-    $("result-note").textContent = "A \u2295 B: " + T.result.length + " vertices, counter-clockwise from the bottom-most (" +
-      T.kind + " coordinates).";
+    var r = T.result.length;
+    $("result-note").textContent = "A \u2295 B: " + (r === 1 ? "1 vertex (a point)" : r === 2 ? "2 vertices (a segment)" :
+      r + " vertices, counter-clockwise from the bottom-most") + " (" + T.kind + " coordinates).";
     T.result_text.forEach(function (t) { html("li", null, ol, t); });
   }
 
@@ -238,6 +249,7 @@
     $("btn-back").disabled = k === 0;
     $("btn-step").disabled = k === n;
     $("btn-reset").disabled = k === 0 && !S.timer;
+    $("btn-run").disabled = n === 0;
     document.body.setAttribute("data-step", String(k));
     document.body.setAttribute("data-steps", String(n));
   }
