@@ -343,6 +343,21 @@ def test_served_mode_edit_and_invalid_input(watched, server):
     assert page.locator("#error").is_hidden()
     again = mk.merge_trace([(0, 0), (1, 0), (0, 1)], [(0, 0), (1, 0), (0, 1)]).to_dict()
     assert page.inner_text("#counter") == f"Step {len(again['steps'])} of {len(again['steps'])}"
+
+    # the convex hull option, and a separate obstacle and robot for the C-space scene
+    page.fill("#edit-a", "0 0, 2 0, 1 1, 2 2, 0 2")
+    page.check("#edit-hull")
+    page.fill("#edit-obstacle", "5 5, 9 5, 9 8, 5 8")
+    page.fill("#edit-robot", "0 0, 1 0, 0 1")
+    page.get_by_role("button", name="Apply").click()
+    _wait_reply(page, 6)
+    assert page.locator("#error").is_hidden()
+    hulled = mk.merge_trace([(0, 0), (2, 0), (2, 2), (0, 2)], [(0, 0), (1, 0), (0, 1)])
+    assert page.input_value("#edit-a") == "\n".join(hulled.to_dict()["a_text"])
+    inflated = mk.cspace_obstacle([(5, 5), (9, 5), (9, 8), (5, 8)], [(0, 0), (1, 0), (0, 1)])
+    text = page.inner_text("#cs-text")
+    assert "obstacle ⊕ (−robot): " + " ".join(f"({x}, {y})" for x, y in inflated.tolist()) in text
+    assert page.inner_text("#cs-linked") == ""
     assert watched.errors == []
     assert all(u.startswith(server.url) for u in watched.requests)
 
