@@ -106,3 +106,11 @@ def test_writers():
     # round trips
     for fmt in ("json", "geojson", "wkt"):
         assert parse_geometry(format_geometry(tri, fmt)).tolist() == tri.tolist()
+
+
+def test_shapely_output_keeps_full_precision():
+    shapely = pytest.importorskip("shapely")
+    g = shapely.Polygon([(0, 0), (1 / 3, 0), (0, 2 / 3)])
+    for fmt in ("wkt", "geojson"):
+        back = parse_geometry(format_geometry(g, fmt))
+        assert back.tolist() == [[0.0, 0.0], [1 / 3, 0.0], [0.0, 2 / 3]]

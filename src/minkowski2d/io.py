@@ -328,7 +328,7 @@ def format_geometry(geom: Any, fmt: str = "json") -> str:
             return _array_wkt(geom)
         import shapely
 
-        return shapely.to_wkt(geom, trim=True)
+        return shapely.to_wkt(geom, rounding_precision=-1, trim=True)
     return _svg(geom)
 
 
