@@ -237,6 +237,8 @@ def test_cli_animate(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.startswith("minkowski2d: error: A: not convex") and "--hull" in err
     assert err.count("\n") == 1
+    assert main(["animate", "0,0", "0,0", "-o", str(tmp_path / "no" / "dir.html")]) == 2
+    assert "cannot write" in capsys.readouterr().err
 
 
 def test_cli_serve_port_in_use(server, capsys):

@@ -51,7 +51,7 @@ def _cspace_args(args: argparse.Namespace) -> dict:
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:
-    from ..cli import emit
+    from ..cli import CLIError, emit
     from ..errors import GeometryError
     from .page import render
 
@@ -62,7 +62,10 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     except GeometryError as exc:
         raise _cli_hint(exc) from None
     inputs = [p for p in (args.a, args.b, args.obstacle, args.robot) if p is not None]
-    emit(page, args.output, inputs)
+    try:
+        emit(page, args.output, inputs)
+    except OSError as exc:
+        raise CLIError(f"cannot write {args.output}: {exc.strerror}") from None
     if args.output not in (None, "-"):
         print(Path(args.output).resolve())
     return 0
