@@ -10,6 +10,17 @@ from __future__ import annotations
 from . import errors
 from .animation import animate
 from .batch import Ragged, minkowski_sum_many
+from .collision import (
+    Distance,
+    Penetration,
+    contains,
+    distance,
+    distance_many,
+    intersects,
+    intersects_many,
+    penetration,
+    penetration_many,
+)
 from .convex import (
     convex_hull,
     cspace_obstacle,
@@ -45,5 +56,14 @@ __all__ = [
     "minkowski_sum_general",
     "convex_decomposition",
     "minkowski_difference",
+    "intersects",
+    "distance",
+    "penetration",
+    "contains",
+    "intersects_many",
+    "distance_many",
+    "penetration_many",
+    "Distance",
+    "Penetration",
     "__version__",
 ]

@@ -1,0 +1,462 @@
+"""Tests for minkowski2d.collision against a brute-force exact reference.
+
+The reference builds D = A ⊕ (−B) as the exact convex hull of all pairwise differences
+(Fractions) and reads intersection, distance and penetration off it by definition; it
+shares no code with the implementation.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import minkowski2d as mk
+from minkowski2d import collision as C
+from minkowski2d.batch import Ragged
+from minkowski2d.errors import (
+    EmptyGeometryError,
+    NonFiniteError,
+    NotConvexError,
+    ShapeError,
+)
+
+from . import oracle
+from .strategies import convex_float, convex_int
+
+SETTINGS = settings(
+    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow]
+)
+REL = 1e-12
+
+# --------------------------------------------------------------------------------------
+# the exact reference
+
+
+def d_hull(a, b) -> list:
+    """D = A ⊕ (−B), exact, CCW, no collinear points."""
+    return oracle.hull([(F(p[0]) - F(q[0]), F(p[1]) - F(q[1])) for p in a for q in b])
+
+
+def seg_d2(p, q, x=(0, 0)) -> F:
+    """Exact squared distance from x to the segment p q."""
+    ex, ey = q[0] - p[0], q[1] - p[1]
+    L = ex * ex + ey * ey
+    if L == 0:
+        return (p[0] - x[0]) ** 2 + (p[1] - x[1]) ** 2
+    t = F((x[0] - p[0]) * ex + (x[1] - p[1]) * ey) / L
+    t = min(max(t, F(0)), F(1))
+    dx, dy = p[0] + t * ex - x[0], p[1] + t * ey - x[1]
+    return dx * dx + dy * dy
+
+
+def ref_inside(H, x=(0, 0)) -> bool:
+    """x in the closed convex polygon H (exact)."""
+    if len(H) == 1:
+        return H[0] == tuple(F(v) for v in x)
+    if len(H) == 2:
+        return seg_d2(H[0], H[1], x) == 0
+    return all(oracle.cross(H[k], H[(k + 1) % len(H)], x) >= 0 for k in range(len(H)))
+
+
+def ref_d2(H, x=(0, 0)) -> F:
+    """Exact squared distance from x to the convex polygon H."""
+    if ref_inside(H, x):
+        return F(0)
+    if len(H) == 1:
+        return (H[0][0] - x[0]) ** 2 + (H[0][1] - x[1]) ** 2
+    return min(seg_d2(H[k], H[(k + 1) % len(H)], x) for k in range(len(H)))
+
+
+def ref_boundary_d2(H, x) -> F:
+    if len(H) == 1:
+        return (H[0][0] - x[0]) ** 2 + (H[0][1] - x[1]) ** 2
+    return min(seg_d2(H[k], H[(k + 1) % len(H)], x) for k in range(len(H)))
+
+
+def ref_signed_depth2(H) -> F:
+    """Signed squared penetration depth: depth^2 when overlapping, -distance^2 apart."""
+    if not ref_inside(H):
+        return -ref_d2(H)
+    if len(H) < 3:
+        return F(0)
+    best = None
+    for k in range(len(H)):
+        p, q = H[k], H[(k + 1) % len(H)]
+        c = oracle.cross(p, q, (0, 0))
+        v = F(c * c) / ((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2)
+        best = v if best is None else min(best, v)
+    return best
+
+
+def rel_err2(x: float, exact2: F) -> float:
+    """Relative error of x against sqrt(|exact2|) with sign, measured on squares (the
+    relative error of x is half of it)."""
+    x = F(x)
+    s = x * x if x >= 0 else -x * x
+    if exact2 == 0:
+        return float(abs(s))
+    return float(abs(s - exact2) / abs(exact2))
+
+
+def scale_of(*polys) -> float:
+    return 1.0 + max(abs(float(v)) for p in polys for pt in p for v in pt)
+
+
+def check_pair(a, b, *, witness_tol: float = 1e-9) -> None:
+    """Every function on (a, b) against the reference."""
+    H = d_hull(a, b)
+    inside = ref_inside(H)
+    for method in ("auto", "sum", "gjk"):
+        assert mk.intersects(a, b, method=method) is inside, method
+    tol = witness_tol * scale_of(a, b)
+    A, B = oracle.hull(a), oracle.hull(b)
+
+    d = mk.distance(a, b)
+    assert rel_err2(d.distance, ref_d2(H)) <= 2 * REL
+    pa, pb = (tuple(F(float(v)) for v in w) for w in (d.point_a, d.point_b))
+    assert float(ref_d2(A, pa)) ** 0.5 <= tol
+    assert float(ref_d2(B, pb)) ** 0.5 <= tol
+    gap = math.hypot(*(d.point_a - d.point_b))
+    assert abs(gap - d.distance) <= tol
+    if inside:
+        assert d.distance == 0.0
+
+    p = mk.penetration(a, b)
+    assert rel_err2(p.depth, ref_signed_depth2(H)) <= 2 * REL
+    assert (p.depth > 0) == (inside and len(H) >= 3 and ref_signed_depth2(H) > 0)
+    pa, pb = (tuple(F(float(v)) for v in w) for w in (p.point_a, p.point_b))
+    assert float(ref_boundary_d2(A, pa)) ** 0.5 <= tol
+    assert float(ref_boundary_d2(B, pb)) ** 0.5 <= tol
+    np.testing.assert_allclose(p.point_a - p.point_b, p.depth * p.normal, rtol=0, atol=tol)
+    n = math.hypot(*p.normal)
+    assert n == 0.0 and len(H) == 1 and H[0] == (0, 0) or abs(n - 1) <= 1e-15 * 4
+    if p.depth != 0.0:
+        # the normal is D's outward normal at p = point_a - point_b: every point of D is
+        # on the inner side of the line through p (up to rounding)
+        nx, ny = (F(float(v)) for v in p.normal)
+        px, py = F(float(p.depth)) * nx, F(float(p.depth)) * ny
+        worst = max(float((x - px) * nx + (y - py) * ny) for x, y in H)
+        assert worst <= tol
+
+
+# --------------------------------------------------------------------------------------
+# properties against the reference
+
+
+@SETTINGS
+@given(convex_int(max_size=10, bound=6), convex_int(max_size=10, bound=6))
+def test_small_ints_degenerate_rich(a, b):
+    # tiny coordinate ranges make touching, collinear and identical cases common
+    check_pair(a, b)
+
+
+@SETTINGS
+@given(convex_int(max_size=12, bound=1000), convex_int(max_size=12, bound=1000))
+def test_ints(a, b):
+    check_pair(a, b)
+
+
+@SETTINGS
+@given(convex_float(max_size=12), convex_float(max_size=12))
+def test_floats(a, b):
+    check_pair(a, b)
+
+
+@SETTINGS
+@given(
+    convex_float(max_size=10),
+    st.sampled_from([0.0, 1e-9, 1.0, 1e3]),
+    st.integers(0, 7),
+)
+def test_floats_shifted_near_contact(a, gap, turn):
+    """B = A moved along an axis by about its width, so touching and near-touching
+    pairs are common (the float shift rounds)."""
+    xs = [p[0] for p in a]
+    ys = [p[1] for p in a]
+    w = (max(xs) - min(xs), max(ys) - min(ys))
+    v = [(w[0] + gap, 0.0), (0.0, w[1] + gap), (-w[0] - gap, 0.0), (w[0] / 2, w[1] / 2)][turn % 4]
+    b = [(x + v[0], y + v[1]) for x, y in a]
+    check_pair(a, b)
+
+
+@settings(max_examples=60, deadline=None)
+@given(convex_int(max_size=10, bound=50), convex_int(max_size=10, bound=50))
+def test_kernel_agrees_with_exact_python_path(a, b):
+    for mode in (0, 1, 2, 3):
+        h1, r1 = C._pair(a, b, mode, False)
+        h2, r2 = C._py_pair(C._exact_list(a), C._exact_list(b), mode)
+        assert h1 == h2
+        if mode in (1, 2):
+            assert abs(r1[0] - r2[0]) <= 1e-13 * max(1.0, abs(r2[0]))
+
+
+# --------------------------------------------------------------------------------------
+# named cases
+
+SQ = [(0, 0), (2, 0), (2, 2), (0, 2)]
+
+
+@pytest.mark.parametrize(
+    "b, inside",
+    [
+        ([(2, 2), (3, 2), (3, 3)], True),  # touching at a vertex
+        ([(2, 0), (4, 0), (4, 2), (2, 2)], True),  # sharing an edge
+        ([(2, 1), (3, 0), (3, 3)], True),  # B's vertex on A's edge
+        ([(1, 3), (3, 1), (3, 3)], True),  # its edge passes through the corner
+        ([(1.5, 3), (3, 1.5), (3, 3)], False),  # across the corner, apart
+        ([(1, 1)], True),  # a point inside
+        ([(2, 1)], True),  # a point on the boundary
+        ([(3, 1)], False),
+        ([(0, 0), (2, 0), (2, 2), (0, 2)], True),  # identical
+        ([(-1, -1), (3, -1), (3, 3), (-1, 3)], True),  # A nested in B
+        ([(1, 1), (1.5, 1), (1, 1.5)], True),  # B nested in A
+        ([(-1, 1), (3, 1)], True),  # a segment through A
+        ([(2, -1), (2, 3)], True),  # a segment along A's edge line
+        ([(3, -1), (3, 3)], False),
+        ([(2, 3), (2, 5)], False),  # collinear with A's edge, beyond its end
+        ([(2, 2), (2, 5)], True),  # collinear, touching the end
+    ],
+)
+def test_named(b, inside):
+    assert mk.intersects(SQ, b) is inside
+    check_pair(SQ, b)
+
+
+def test_segments_and_points():
+    for a, b in [
+        ([(0, 0), (4, 0)], [(2, 0), (6, 0)]),  # overlapping collinear segments
+        ([(0, 0), (4, 0)], [(5, 0), (6, 0)]),  # collinear, apart
+        ([(0, 0), (4, 0)], [(4, 0), (6, 0)]),  # collinear, touching at an end
+        ([(0, 0), (4, 4)], [(0, 4), (4, 0)]),  # crossing
+        ([(0, 0), (4, 4)], [(1, 0), (5, 4)]),  # parallel
+        ([(0, 0)], [(0, 0)]),
+        ([(0, 0)], [(3, 4)]),
+        ([(0, 0)], [(1, -1), (1, 1)]),
+    ]:
+        check_pair(a, b)
+        check_pair(b, a)
+    assert mk.distance([(0, 0)], [(3, 4)]).distance == 5.0
+    assert mk.penetration([(0, 0)], [(0, 0)]).normal.tolist() == [0.0, 0.0]
+
+
+def test_one_ulp_apart_and_overlapping():
+    u = math.ulp(1.0)
+    a = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    apart = [(1.0 + u, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0 + u, 1.0)]
+    over = [(1.0 - u / 2, 0.25), (2.0, 0.25), (2.0, 0.75), (1.0 - u / 2, 0.75)]
+    assert not mk.intersects(a, apart)
+    assert not mk.intersects(a, apart, method="gjk")
+    assert mk.distance(a, apart).distance == u
+    assert mk.penetration(a, apart).depth == -u
+    assert mk.intersects(a, over) and mk.intersects(a, over, method="gjk")
+    p = mk.penetration(a, over)
+    assert p.depth == u / 2 and p.normal.tolist() == [1.0, 0.0]
+    check_pair(a, apart)
+    check_pair(a, over)
+
+
+def test_near_touching_slanted_edge():
+    """B's vertex is the float nearest to a point on A's slanted edge: the exact answer
+    depends on bits far below the float filter's resolution."""
+    a = [(0.1, 0.2), (10.3, 7.7), (-3.0, 5.0)]
+    for t in (0.25, 0.5, 0.7, 1 / 3):
+        x = 0.1 + t * (10.3 - 0.1)
+        y = 0.2 + t * (7.7 - 0.2)
+        for dx in (0.0, math.ulp(x), -math.ulp(x)):
+            b = [(x + dx, y), (x + 5.0, y - 1.0), (x + 4.0, y - 6.0)]
+            check_pair(a, b)
+
+
+def test_huge_and_tiny_coordinates_take_the_exact_path():
+    big = 1 << 62
+    a = [(big, big), (big + 2, big), (big + 2, big + 2), (big, big + 2)]
+    b = [(big + 3, big), (big + 5, big), (big + 5, big + 2)]
+    assert not mk.intersects(a, b) and not mk.intersects(a, b, method="gjk")
+    assert mk.distance(a, b).distance == 1.0
+    check_pair(a, b)
+    b2 = [(big + 1, big + 1), (big + 5, big), (big + 5, big + 2)]
+    check_pair(a, b2)
+    for s in (2.0**-1000, 2.0**1000, 2.0**450, 2.0**-450):
+        fa = [(x * s, y * s) for x, y in [(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (0.0, 2.0)]]
+        fb = [(x * s, y * s) for x, y in [(3.0, 1.0), (4.0, 0.0), (4.0, 5.0)]]
+        assert mk.distance(fa, fb).distance == s
+        check_pair(fa, fb, witness_tol=1e-9)
+        fb2 = [(x * s, y * s) for x, y in [(1.5, 1.0), (4.0, 0.0), (4.0, 5.0)]]
+        assert mk.penetration(fa, fb2).depth == pytest.approx(0.5 * s, rel=1e-15)
+    fr = [(F(1, 3), F(0)), (F(2, 3), F(0)), (F(1, 2), F(1, 7))]
+    fr2 = [(F(2, 3), F(0)), (F(1), F(0)), (F(5, 6), F(1, 7))]
+    assert mk.intersects(fr, fr2) and mk.intersects(fr, fr2, method="gjk")
+    assert mk.penetration(fr, fr2).depth == 0.0
+
+
+def test_nested_and_identical_many_sizes():
+    t = np.linspace(0, 2 * np.pi, 65)[:-1]
+    big = np.stack([np.cos(t), np.sin(t)], 1) * 10
+    small = big / 10
+    for a, b in ((big, big), (big, small), (small, big), (big, big + 1e-9)):
+        for method in ("sum", "gjk"):
+            assert mk.intersects(a, b, method=method)
+    p = mk.penetration(big, small)
+    # the small disk must move until it leaves the big one: about 11 (within polygon slack)
+    assert 10.5 < p.depth < 11.0
+    assert mk.distance(big, small).distance == 0.0
+
+
+def test_gjk_origin_on_simplex_edge_and_cycling_shapes():
+    # regular polygons touching edge to edge and vertex to vertex, many rotations
+    t = np.linspace(0, 2 * np.pi, 9)[:-1]
+    oct_ = np.stack([np.cos(t), np.sin(t)], 1)
+    w = 2 * np.cos(np.pi / 8)  # flat-to-flat width
+    for k in range(8):
+        ang = k * np.pi / 4 + np.pi / 8
+        v = (w * np.cos(ang), w * np.sin(ang))
+        b = oct_ + v  # touches along a (float) edge: decided exactly either way
+        assert mk.intersects(oct_, b, method="gjk") == mk.intersects(oct_, b, method="sum")
+    ints = [(0, 0), (4, 0), (4, 4), (0, 4)]
+    for v in [(4, 0), (4, 4), (0, -4), (2, 4), (4, 1), (5, 5), (-4, -4)]:
+        b = [(x + v[0], y + v[1]) for x, y in ints]
+        assert mk.intersects(ints, b, method="gjk") == mk.intersects(ints, b, method="sum")
+        check_pair(ints, b)
+
+
+# --------------------------------------------------------------------------------------
+# contains
+
+
+def test_contains_examples():
+    tri = [(0, 0), (4, 0), (0, 4)]
+    pts = [(1, 1), (2, 2), (0, 0), (4, 0), (0, 2), (3, 3), (-1, 0), (5, 0), (2, -1)]
+    assert mk.contains(tri, pts).tolist() == [True, True, True, True, True] + [False] * 4
+    assert mk.contains(tri, (2, 2)) is True
+    assert mk.contains([(0, 0), (4, 4)], [(2, 2), (5, 5), (2, 3)]).tolist() == [True, False, False]
+    assert mk.contains([(1, 1)], [(1, 1), (1, 2)]).tolist() == [True, False]
+    assert mk.contains(tri, np.zeros((0, 2))).shape == (0,)
+
+
+@SETTINGS
+@given(
+    convex_float(max_size=12) | convex_int(max_size=12, bound=8),
+    st.lists(st.tuples(st.integers(-9, 9), st.integers(-9, 9)), min_size=1, max_size=20),
+)
+def test_contains_against_reference(poly, pts):
+    H = oracle.hull(poly)
+    # query grid points plus the polygon's own vertices and edge midpoints
+    qs = list(pts) + [tuple(p) for p in poly]
+    qs += [((p[0] + q[0]) / 2, (p[1] + q[1]) / 2) for p, q in zip(poly, poly[1:])]
+    got = mk.contains(poly, qs)
+    assert got.tolist() == [ref_inside(H, (F(x), F(y))) for x, y in qs]
+
+
+def test_contains_exact_near_boundary_and_huge():
+    a = [(0.1, 0.2), (10.3, 7.7), (-3.0, 5.0)]
+    x = 0.1 + 0.3 * 10.2
+    y = 0.2 + 0.3 * 7.5
+    qs = [(x, y), (math.nextafter(x, 99), y), (math.nextafter(x, -99), y)]
+    H = oracle.hull(a)
+    assert mk.contains(a, qs).tolist() == [ref_inside(H, q) for q in qs]
+    big = 1 << 70
+    sq = [(big, big), (big + 4, big), (big + 4, big + 4), (big, big + 4)]
+    assert mk.contains(sq, [(big + 4, big + 2), (big + 5, big + 2)]).tolist() == [True, False]
+
+
+# --------------------------------------------------------------------------------------
+# batches
+
+
+def _pairs(rng, P, n):
+    As, Bs = [], []
+    for _ in range(P):
+        for lst in (As, Bs):
+            k = rng.integers(1, n + 1)
+            pts = rng.integers(-6, 7, size=(k, 2))
+            lst.append(mk.convex_hull(pts) + rng.integers(-4, 5, size=2))
+    return As, Bs
+
+
+@pytest.mark.parametrize("n", [8, 40])
+def test_batch_identical_to_single(n):
+    rng = np.random.default_rng(n)
+    As, Bs = _pairs(rng, 150, n)
+    fl = [a.astype(float) * 0.37 for a in As], [b.astype(float) * 0.37 for b in Bs]
+    for A, B in ((As, Bs), fl, (Ragged.from_list(As), Ragged.from_list(Bs))):
+        for method in ("auto", "sum", "gjk"):
+            got = mk.intersects_many(A, B, method=method)
+            assert got.tolist() == [mk.intersects(a, b, method=method) for a, b in zip(A, B)]
+        d = mk.distance_many(A, B)
+        p = mk.penetration_many(A, B)
+        for k, (a, b) in enumerate(zip(A, B)):
+            ds = mk.distance(a, b)
+            assert d.distance[k] == ds.distance
+            assert d.point_a[k].tolist() == ds.point_a.tolist()
+            assert d.point_b[k].tolist() == ds.point_b.tolist()
+            ps = mk.penetration(a, b)
+            assert p.depth[k] == ps.depth
+            assert p.normal[k].tolist() == ps.normal.tolist()
+            assert p.point_a[k].tolist() == ps.point_a.tolist()
+            assert p.point_b[k].tolist() == ps.point_b.tolist()
+
+
+def test_batch_one_against_many():
+    rng = np.random.default_rng(5)
+    _, Bs = _pairs(rng, 60, 10)
+    robot = [(0, 0), (3, 0), (3, 2), (0, 2)]
+    for a_many, args in ((False, (robot, Bs)), (True, (Bs, robot))):
+        hit = mk.intersects_many(*args)
+        d = mk.distance_many(*args)
+        p = mk.penetration_many(*args)
+        for k, b in enumerate(Bs):
+            pair = (b, robot) if a_many else (robot, b)
+            assert hit[k] == mk.intersects(*pair)
+            assert d.distance[k] == mk.distance(*pair).distance
+            assert p.depth[k] == mk.penetration(*pair).depth
+
+
+def test_batch_exact_fallback_and_shapely():
+    big = 1 << 60
+    As = Ragged.from_list([np.array([(big, 0), (big + 2, 0), (big, 2)], dtype=np.int64)] * 2)
+    Bs = Ragged.from_list(
+        [np.array([(big + 1, 1), (big + 3, 1), (big + 3, 3)], dtype=np.int64),
+         np.array([(big + 3, 0), (big + 4, 0), (big + 4, 1)], dtype=np.int64)]
+    )
+    assert mk.intersects_many(As, Bs).tolist() == [True, False]
+    assert mk.distance_many(As, Bs).distance.tolist() == [0.0, 1.0]
+    shapely = pytest.importorskip("shapely")
+    g = [shapely.Polygon(SQ), shapely.Polygon([(3, 0), (4, 0), (4, 1)])]
+    assert mk.intersects_many(g, [(2, 2), (3, 3), (2, 3)]).tolist() == [True, False]
+    assert mk.intersects(shapely.Polygon(SQ), shapely.Point(2, 2))
+
+
+# --------------------------------------------------------------------------------------
+# bad input
+
+
+def test_errors():
+    star = [(0, 0), (2, 6), (4, 0), (-1, 4), (5, 4)]
+    with pytest.raises(NotConvexError, match="b: not convex"):
+        mk.intersects(SQ, star)
+    with pytest.raises(NotConvexError, match="a: not convex"):
+        mk.distance(star, SQ)
+    with pytest.raises(NotConvexError, match="poly"):
+        mk.contains(star, [(1, 1)])
+    assert mk.intersects(star, SQ, hull=True)
+    with pytest.raises(NotConvexError, match=r"Bs\[1\]"):
+        mk.penetration_many(SQ, [SQ, star])
+    with pytest.raises(EmptyGeometryError, match="a: empty"):
+        mk.intersects([], SQ)
+    with pytest.raises(NonFiniteError, match="b: vertex 1"):
+        mk.distance(SQ, [(0.0, 0.0), (float("nan"), 1.0)])
+    with pytest.raises(ShapeError):
+        mk.intersects([(1, 2, 3)], SQ)
+    with pytest.raises(ShapeError, match="points"):
+        mk.contains(SQ, (1, 2, 3))
+    with pytest.raises(ValueError, match="method"):
+        mk.intersects(SQ, SQ, method="epa")
+    with pytest.raises(ShapeError, match="equal counts"):
+        mk.intersects_many([SQ, SQ], [SQ])
+    with pytest.raises(TypeError):
+        mk.intersects(SQ, SQ, "gjk")  # method is keyword-only
