@@ -101,3 +101,11 @@ def test_python_dash_m_entry_point(files):
     )
     assert p.returncode == 0, p.stderr
     assert p.stdout.strip() == "POLYGON ((0 0, 3 0, 3 1, 1 3, 0 3, 0 0))"
+
+
+def test_unwritable_output_is_one_line(capsys, files, tmp_path):
+    a, b = files
+    rc, _, err = run(["sum", str(a), str(b), "-o", str(tmp_path / "no" / "dir" / "x.json")], capsys)
+    assert rc == 2 and err.count("\n") == 1 and "No such file or directory" in err
+    rc, _, err = run(["demo", "-o", str(tmp_path / "no" / "dir" / "a.html")], capsys)
+    assert rc == 2 and err.startswith("minkowski2d: error: ")

@@ -213,6 +213,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except (GeometryError, CLIError) as exc:
         print(f"minkowski2d: error: {exc}", file=sys.stderr)
         return 2
+    except OSError as exc:  # e.g. an output directory that does not exist
+        where = f": {exc.filename}" if getattr(exc, "filename", None) else ""
+        print(f"minkowski2d: error: {exc.strerror or exc}{where}", file=sys.stderr)
+        return 2
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:
