@@ -44,7 +44,7 @@ DISTANCE = 1
 PENETRATION = 2
 GJK = 3
 AUTO = 4  # INTERSECTS for small pairs, GJK for large ones (same answers, measured faster)
-AUTO_SUM_MAX = 40  # vertex total up to which the boundary walk beats GJK
+AUTO_SUM_MAX = 64  # vertex total up to which the boundary walk beats GJK (measured)
 
 OUT_OF_RANGE = 10  # status: a coordinate the kernels cannot decide exactly on
 
@@ -74,12 +74,6 @@ def _len(x, y):
     """|(x, y)|: no overflow or underflow for differences of coordinates in the kernels'
     range (squares stay within [2**-904, 2**802]); within 2 ulps."""
     return math.sqrt(x * x + y * y)
-
-
-@njit(inline="always", **_JIT)
-def _orient_pts(p, i, j, k):
-    """Exact orientation of points i, j, k of the (n, 2) array p."""
-    return cross_sign(p[i, 0], p[i, 1], p[j, 0], p[j, 1], p[i, 0], p[i, 1], p[k, 0], p[k, 1])
 
 
 @njit(inline="always", **_JIT)
@@ -271,51 +265,61 @@ def _take_a(pa, ia, na, sa, i, pb, ib, nb, sbm, t, j):
 
 
 @njit(**_JIT)
-def _intersects(pa, ia, na, sa, pb, ib, nb, sb):
+def _intersects(pa, ia, na, sa, pb, ib, nb, sb, AX, AY, BX, BY):
     """1 when the origin lies in D = A ⊕ (−B) (closed), else 0. Exact; stops at the first
-    separating edge."""
+    separating edge. The walk of ``_walk`` without storing anything."""
     ea = na if na > 1 else 0
     eb = nb if nb > 1 else 0
     if ea + eb == 0:
         a = ia[0]
         b = ib[0]
         return 1 if pa[a, 0] == pb[b, 0] and pa[a, 1] == pb[b, 1] else 0
-    s = sb % nb
+    _gather(pa, ia, na, pb, ib, nb, sb, AX, AY, BX, BY)
     sbm = nb - sb if nb > 1 else 0
     i = 0
     t = 0
-    j = s
     zero = True
-    while i < ea or t < eb:
-        if i == ea:
-            ta = False
-        elif t == eb:
-            ta = True
+    for _ in range(ea + eb):
+        ax0 = AX[i]
+        ay0 = AY[i]
+        ax1 = AX[i + 1]
+        ay1 = AY[i + 1]
+        bx0 = BX[t]
+        by0 = BY[t]
+        bx1 = BX[t + 1]
+        by1 = BY[t + 1]
+        uax = ax1 - ax0
+        uay = ay1 - ay0
+        ubx = bx0 - bx1
+        uby = by0 - by1
+        lft = uax * uby
+        rgt = uay * ubx
+        det = lft - rgt
+        ha = i >= sa
+        hb = t >= sbm
+        same = ha == hb
+        ta = det > 0.0 if same else not ha
+        if same and abs(det) <= ERRBOUND * (abs(lft) + abs(rgt)) and i < ea and t < eb:
+            ta = cross_sign(ax0, ay0, ax1, ay1, bx1, by1, bx0, by0) >= 0
+        ta = (ta or t >= eb) and i < ea
+        p0x = ax0 if ta else bx0
+        p0y = ay0 if ta else by0
+        p1x = ax1 if ta else bx1
+        p1y = ay1 if ta else by1
+        qx = bx0 if ta else ax0
+        qy = by0 if ta else ay0
+        lft = (p1x - p0x) * (qy - p0y)
+        rgt = (p1y - p0y) * (qx - p0x)
+        c = lft - rgt
+        if abs(c) <= ERRBOUND * (abs(lft) + abs(rgt)):
+            o = cross_sign(p0x, p0y, p1x, p1y, p0x, p0y, qx, qy)
         else:
-            ta = _take_a(pa, ia, na, sa, i, pb, ib, nb, sbm, t, j)
-        if ta:
-            a0 = ia[i]
-            a1 = ia[i + 1] if i + 1 < na else ia[0]
-            b0 = ib[j]
-            o = cross_sign(
-                pa[a0, 0], pa[a0, 1], pa[a1, 0], pa[a1, 1],
-                pa[a0, 0], pa[a0, 1], pb[b0, 0], pb[b0, 1],
-            )
-            i += 1
-        else:
-            b0 = ib[j]
-            b1 = ib[j + 1] if j + 1 < nb else ib[0]
-            a0 = ia[i] if i < na else ia[0]
-            o = cross_sign(
-                pb[b0, 0], pb[b0, 1], pb[b1, 0], pb[b1, 1],
-                pb[b0, 0], pb[b0, 1], pa[a0, 0], pa[a0, 1],
-            )
-            t += 1
-            j = j + 1 if j + 1 < nb else 0
+            o = 1 if c > 0.0 else -1
         if o < 0:
             return 0
-        if o > 0:
-            zero = False
+        zero &= o == 0
+        i += 1 if ta else 0
+        t += 0 if ta else 1
     if not zero:
         return 1
     # every edge line passes through the origin: D is a segment on a line through it
@@ -353,6 +357,84 @@ def _subedges(pa, ia, na, sa, pb, ib, nb, sb, kind, ii, jj):
     return k
 
 
+@njit(**_JIT)
+def _gather(pa, ia, na, pb, ib, nb, sb, AX, AY, BX, BY):
+    """Copy A's normalized vertices (from its first) and B's from its top vertex (−B's
+    first), each with two wrap-around entries, into contiguous scratch."""
+    for t in range(na + 2):
+        v = ia[t % na]
+        AX[t] = pa[v, 0]
+        AY[t] = pa[v, 1]
+    s = sb % nb
+    for t in range(nb + 2):
+        v = ib[(s + t) % nb]
+        BX[t] = pb[v, 0]
+        BY[t] = pb[v, 1]
+
+
+@njit(**_JIT)
+def _walk(pa, ia, na, sa, pb, ib, nb, sb, AX, AY, BX, BY, kind, ii, jj, cv):
+    """``_subedges`` and each sub-edge's accurate cross value ``cv`` in one pass over
+    gathered coordinates, with the merge decision and the feature selection made
+    without data-dependent branches (the float filter's rare misses branch to the exact
+    evaluation). Returns the number of sub-edges."""
+    _gather(pa, ia, na, pb, ib, nb, sb, AX, AY, BX, BY)
+    ea = na if na > 1 else 0
+    eb = nb if nb > 1 else 0
+    s = sb % nb
+    sbm = nb - sb if nb > 1 else 0
+    i = 0
+    t = 0
+    for k in range(ea + eb):
+        ax0 = AX[i]
+        ay0 = AY[i]
+        ax1 = AX[i + 1]
+        ay1 = AY[i + 1]
+        bx0 = BX[t]
+        by0 = BY[t]
+        bx1 = BX[t + 1]
+        by1 = BY[t + 1]
+        # c = cross(a1 - a0, b0 - b1): > 0 when −B's edge is CCW of A's (A first)
+        uax = ax1 - ax0
+        uay = ay1 - ay0
+        ubx = bx0 - bx1
+        uby = by0 - by1
+        lft = uax * uby
+        rgt = uay * ubx
+        det = lft - rgt
+        ha = i >= sa
+        hb = t >= sbm
+        same = ha == hb
+        ta = det > 0.0 if same else not ha
+        if same and abs(det) <= ERRBOUND * (abs(lft) + abs(rgt)) and i < ea and t < eb:
+            ta = cross_sign(ax0, ay0, ax1, ay1, bx1, by1, bx0, by0) >= 0
+        ta = (ta or t >= eb) and i < ea
+        # the sub-edge p0 -> p1 with the other polygon's vertex q
+        p0x = ax0 if ta else bx0
+        p0y = ay0 if ta else by0
+        p1x = ax1 if ta else bx1
+        p1y = ay1 if ta else by1
+        qx = bx0 if ta else ax0
+        qy = by0 if ta else ay0
+        ex = p1x - p0x
+        ey = p1y - p0y
+        fx = qx - p0x
+        fy = qy - p0y
+        lft = ex * fy
+        rgt = ey * fx
+        c = lft - rgt
+        if ERRBOUND * (abs(lft) + abs(rgt)) > _REL * abs(c):
+            c = _cross_value(p0x, p0y, p1x, p1y, p0x, p0y, qx, qy)
+        cv[k] = c
+        kind[k] = 0 if ta else 1
+        ii[k] = i if i < na else 0
+        w = s + t
+        jj[k] = w if w < nb else w - nb
+        i += 1 if ta else 0
+        t += 0 if ta else 1
+    return ea + eb
+
+
 @njit(inline="always", **_JIT)
 def _feature(pa, ia, na, pb, ib, nb, kind, ii, jj, k):
     """(X coords, p0, p1, Y coords, q) of sub-edge k: the edge p0 -> p1 of X, vertex q."""
@@ -373,14 +455,6 @@ def _fdot0(X, p0, p1, Y, q):
 def _fdot1(X, p0, p1, Y, q):
     """sign dot(q - p1, p1 - p0)."""
     return _dot_sign(X[p1, 0], X[p1, 1], Y[q, 0], Y[q, 1], X[p0, 0], X[p0, 1], X[p1, 0], X[p1, 1])
-
-
-@njit(inline="always", **_JIT)
-def _fcross(X, p0, p1, Y, q):
-    """cross(p1 - p0, q - p0), accurate (see _cross_value)."""
-    return _cross_value(
-        X[p0, 0], X[p0, 1], X[p1, 0], X[p1, 1], X[p0, 0], X[p0, 1], Y[q, 0], Y[q, 1]
-    )
 
 
 @njit(**_JIT)
@@ -572,7 +646,9 @@ def _common_point(pa, ia, na, pb, ib, nb, kind, ii, jj, K, out):
 
 
 @njit(**_JIT)
-def _collide(pa, ia, na, sa, inva, pb, ib, nb, sb, invb, mode, kind, ii, jj, vis, cv, out):
+def _collide(
+    pa, ia, na, sa, inva, pb, ib, nb, sb, invb, mode, kind, ii, jj, vis, cv, AX, AY, BX, BY, out
+):
     """Distance (mode 1) or penetration (mode 2) of one pair; writes the result row and
     returns 1 when the polygons intersect (touching included). ``cv`` receives each
     sub-edge's accurate cross value, ``vis`` its exact sign."""
@@ -584,19 +660,14 @@ def _collide(pa, ia, na, sa, inva, pb, ib, nb, sb, invb, mode, kind, ii, jj, vis
             out[0] = 0.0  # no -0.0
             return 1
         return 0
-    K = _subedges(pa, ia, na, sa, pb, ib, nb, sb, kind, ii, jj)
+    K = _walk(pa, ia, na, sa, pb, ib, nb, sb, AX, AY, BX, BY, kind, ii, jj, cv)
     neg = False
     allzero = True
     for k in range(K):
-        X, p0, p1, Y, q = _feature(pa, ia, na, pb, ib, nb, kind, ii, jj, k)
-        c = _fcross(X, p0, p1, Y, q)
-        cv[k] = c
-        o = _sgn(c)
+        o = _sgn(cv[k])
         vis[k] = o
-        if o < 0:
-            neg = True
-        elif o > 0:
-            allzero = False
+        neg |= o < 0
+        allzero &= o == 0
     if not neg and allzero:
         # D is a segment on a line through the origin: on it or beyond an end?
         for k in range(K):
@@ -981,14 +1052,17 @@ def pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode
     """
     P = qa.shape[0]
     big = 2
-    if mode == DISTANCE or mode == PENETRATION:
-        for q in range(P):
-            big = max(big, ka[qa[q]] + kb[qb[q]])
+    for q in range(P):
+        big = max(big, ka[qa[q]] + kb[qb[q]])
     kind = np.empty(big, np.int8)
     ii = np.empty(big, np.int64)
     jj = np.empty(big, np.int64)
     vis = np.empty(big, np.int8)
     cv = np.empty(big)
+    AX = np.empty(big + 2)
+    AY = np.empty(big + 2)
+    BX = np.empty(big + 2)
+    BY = np.empty(big + 2)
     for q in range(P):
         x = qa[q]
         y = qb[q]
@@ -997,7 +1071,7 @@ def pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode
         ia = ida[oa: oa + ka[x]]
         ib = idb[ob: ob + kb[y]]
         if mode == INTERSECTS or (mode == AUTO and ka[x] + kb[y] <= AUTO_SUM_MAX):
-            hit[q] = _intersects(pa, ia, ka[x], sa[x], pb, ib, kb[y], sb[y])
+            hit[q] = _intersects(pa, ia, ka[x], sa[x], pb, ib, kb[y], sb[y], AX, AY, BX, BY)
         elif mode == GJK or mode == AUTO:
             r = _gjk(pa, ia, ka[x], pb, ib, kb[y])
             if r < 0:
@@ -1007,7 +1081,7 @@ def pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode
             hit[q] = _collide(
                 pa, ia, ka[x], sa[x], inva[oa: oa + ka[x]],
                 pb, ib, kb[y], sb[y], invb[ob: ob + kb[y]],
-                mode, kind, ii, jj, vis, cv, res[q],
+                mode, kind, ii, jj, vis, cv, AX, AY, BX, BY, res[q],
             )
             if mode == DISTANCE:
                 if res[q, 0] < 0.0:

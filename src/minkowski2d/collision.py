@@ -184,7 +184,7 @@ def intersects(a: ArrayLike2, b: ArrayLike2, *, method: str = "auto", hull: bool
         the first separating edge). ``"gjk"`` never forms that boundary: an exact GJK
         iteration on support functions (O(n + m) per iteration, few iterations). They
         agree on every input; ``"auto"`` (default) takes the sum walk when the two
-        polygons have at most 40 vertices together and GJK otherwise, which measured
+        polygons have at most 64 vertices together and GJK otherwise, which measured
         fastest.
     hull : bool, default False
         Accept any point sets and use their convex hulls.
