@@ -121,21 +121,21 @@ def run_case(name, a, b, driver, rc_max, reps):
     t_ours, ours = best_of(lambda: mk.minkowski_sum_general(a, b), reps)
     area = ours.area
     rows.append(("minkowski2d decomposition", t_ours, 0.0))
-    if len(a) + len(b) <= 600:
+    if len(a) + len(b) <= 200:
         t, c = best_of(lambda: mk.minkowski_sum_general(a, b, method="convolution"), 1)
         rows.append(("minkowski2d convolution", t, abs(c.area - area) / area))
     else:
         rows.append(("minkowski2d convolution", None, "skipped (arrangement too large)"))
     ai = np.asarray(a, dtype=np.int64) if np.all(np.asarray(a) == np.round(a)) else None
     bi = np.asarray(b, dtype=np.int64) if np.all(np.asarray(b) == np.round(b)) else None
-    if ai is not None and bi is not None:
+    if ai is not None and bi is not None and len(a) * len(b) <= 128 * 128:
         reps_c = 1 if len(a) > 300 else reps
         t, p = best_of(lambda: clipper(ai, bi, False), reps_c)
         rows.append(("pyclipper MinkowskiSum (raw)", t, abs(paths_area(p) - area) / area))
         t, p = best_of(lambda: clipper(ai, bi, True), reps_c)
         rows.append(("pyclipper + fill", t, abs(paths_area(p) - area) / area))
     else:
-        rows.append(("pyclipper", None, "skipped (needs integer coordinates)"))
+        rows.append(("pyclipper", None, "skipped (needs integer coordinates, n*m <= 128^2)"))
     rows.append(("Clipper2 (pyclipr)", None, "unavailable (no MinkowskiSum in pyclipr)"))
     if driver and ai is not None and bi is not None:
         for m, label in (("hm", "CGAL Hertel-Mehlhorn"), ("rc", "CGAL reduced convolution")):
