@@ -39,7 +39,10 @@ def near_collinear(draw):
     q = (p[0] + d[0] * s, p[1] + d[1] * s)
     r = (p[0] + d[0] * t, p[1] + d[1] * t)
     k = draw(st.integers(0, 2))
-    r = (np.nextafter(r[0], np.inf) if k == 1 else r[0], np.nextafter(r[1], -np.inf) if k == 2 else r[1])
+    r = (
+        np.nextafter(r[0], np.inf) if k == 1 else r[0],
+        np.nextafter(r[1], -np.inf) if k == 2 else r[1],
+    )
     return p, q, (float(r[0]), float(r[1]))
 
 
@@ -80,3 +83,25 @@ def test_integers_and_fractions_exact():
     assert orient((F(1, 3), 0), (F(2, 3), 0), (1, 0)) == 0
     assert orient_array([[0, 0]], [[1 << 40, 1]], [[1 << 41, 2]]).tolist() == [0]
     assert orient_array([[0, 0]], [[1 << 60, 1]], [[1 << 61, 3]]).tolist() == [1]
+
+
+@settings(max_examples=300, deadline=None)
+@given(near_collinear(), st.integers(-1074, -500))
+def test_python_predicate_exact_where_products_underflow(tri, e):
+    """Coordinates so small that the cross-product terms are subnormal: the relative
+    float bound no longer holds, and the Python path must still be exact."""
+    p, q, r = ((x * 2.0**e, y * 2.0**e) for x, y in tri)
+    assert orient(p, q, r) == exact_cross(p, q, p, r)
+
+
+def test_tiny_polygon_sums_exact_below_the_kernel_range():
+    import minkowski2d as mk
+
+    from . import oracle
+
+    for e in (-540, -560, -600, -1000):
+        s = 2.0**e
+        a = [(0.0, 0.0), (3 * s, s), (s, 3 * s)]
+        b = [(0.0, 0.0), (3 * s, s + 2.0**-1074), (-s, s)]
+        got = mk.minkowski_sum(a, b)
+        assert got.tolist() == [list(v) for v in oracle.rounded(oracle.minkowski_sum(a, b))]

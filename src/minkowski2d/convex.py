@@ -20,7 +20,7 @@ import numpy as np
 from ._coerce import EXACT, FLOAT, INT, INT64_MIN, coerce, py_points
 from ._types import ArrayLike2, Polygon
 from .errors import NotConvexError, OverflowGeometryError
-from .predicates import ERRBOUND, _cross_exact, _cross_float
+from .predicates import ERRBOUND, MINBOUND, _cross_exact, _cross_float
 
 __all__ = [
     "normalize",
@@ -84,7 +84,8 @@ def _py_fast(pts: list, kind: str) -> tuple[list, list, int] | None:
             lft = ux * vy
             rgt = uy * vx
             d = lft - rgt
-            if abs(d) <= ERRBOUND * (abs(lft) + abs(rgt)):
+            bound = ERRBOUND * (abs(lft) + abs(rgt))
+            if abs(d) <= bound or bound < MINBOUND:
                 return None
         else:
             d = ux * vy - uy * vx
@@ -246,7 +247,8 @@ def _py_merge(
                     lft = ux * vy
                     rgt = uy * vx
                     d = lft - rgt
-                    if abs(d) <= ERRBOUND * (abs(lft) + abs(rgt)):
+                    bound = ERRBOUND * (abs(lft) + abs(rgt))
+                    if abs(d) <= bound or bound < MINBOUND:
                         d = _cross_float((ax, ay), (a1x, a1y), (bx, by), (b1x, b1y))
                 else:
                     d = ux * vy - uy * vx

@@ -28,11 +28,15 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["orient", "cross_sign", "orient_array", "ERRBOUND"]
+__all__ = ["orient", "cross_sign", "orient_array", "ERRBOUND", "MINBOUND"]
 
 EPS = 2.0**-53
 #: Relative error bound of the float cross product (Shewchuk's ccwerrboundA).
 ERRBOUND = (3.0 + 16.0 * EPS) * EPS
+#: The bound is relative: it holds while the products stay clear of underflow. Below this
+#: value of ERRBOUND * (|l| + |r|) (that is, |l| + |r| < 2**-960) the float test is not
+#: trusted and the exact evaluation decides.
+MINBOUND = ERRBOUND * 2.0**-960
 
 
 def _sgn(v: Any) -> int:
@@ -60,10 +64,11 @@ def _cross_float(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
     rgt = uy * vx
     det = lft - rgt
     bound = ERRBOUND * (abs(lft) + abs(rgt))
-    if det > bound:
-        return 1
-    if -det > bound:
-        return -1
+    if bound >= MINBOUND:
+        if det > bound:
+            return 1
+        if -det > bound:
+            return -1
     return _cross_fraction(a0, a1, b0, b1)
 
 
@@ -163,7 +168,7 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
             det = lft - rgt
             bound = ERRBOUND * (np.abs(lft) + np.abs(rgt))
         out = np.sign(det).astype(np.int8)
-        sure = np.abs(det) > bound
+        sure = (np.abs(det) > bound) & (bound >= MINBOUND)
         for k in np.flatnonzero(~sure):
             out[k] = _cross_fraction(*(tuple(float(c) for c in v[k]) for v in (pf, qf, pf, rf)))
         return out
