@@ -29,7 +29,10 @@ def test_json_points_keep_ints_exact():
 
 
 def test_geojson_and_wkt():
-    gj = {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [2, 0], [0, 2], [0, 0]]]}}
+    gj = {
+        "type": "Feature",
+        "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [2, 0], [0, 2], [0, 0]]]},
+    }
     assert parse_geometry(json.dumps(gj)).tolist() == [[0, 0], [2, 0], [0, 2]]
     assert parse_geometry("POLYGON ((0 0, 2 0, 0 2, 0 0))").tolist() == [[0, 0], [2, 0], [0, 2]]
     assert parse_geometry("POLYGON ((0 0, 2.5 0, 0 2, 0 0))").dtype == np.float64
@@ -62,7 +65,13 @@ def test_missing_file(tmp_path):
 
 
 def test_cgal_formats():
-    assert parse_cgal_dat("5 0 0 4 0 4 4 2 4 0 4")[0].tolist() == [[0, 0], [4, 0], [4, 4], [2, 4], [0, 4]]
+    assert parse_cgal_dat("5 0 0 4 0 4 4 2 4 0 4")[0].tolist() == [
+        [0, 0],
+        [4, 0],
+        [4, 4],
+        [2, 4],
+        [0, 4],
+    ]
     (p,) = parse_cgal_dat("4 0 0 3 0 3 3 0 3\n1\n4\n1 1 1 2 2 2 2 1\n")
     assert p.area == 8.0
     (u,) = parse_cgal_dat("0\n1\n4\n0 0 0 1 1 1 1 0\n")
@@ -74,7 +83,9 @@ def test_cgal_formats():
         parse_cgal_dat("4 0 0 1 0")
 
 
-@pytest.mark.skipif(not DATA.is_dir(), reason="../shared/data/cgal-minkowski is not beside the repo")
+@pytest.mark.skipif(
+    not DATA.is_dir(), reason="../shared/data/cgal-minkowski is not beside the repo"
+)
 def test_every_shared_cgal_file_parses():
     files = sorted(DATA.glob("*.dat"))
     assert len(files) >= 40
@@ -114,3 +125,16 @@ def test_shapely_output_keeps_full_precision():
     for fmt in ("wkt", "geojson"):
         back = parse_geometry(format_geometry(g, fmt))
         assert back.tolist() == [[0.0, 0.0], [1 / 3, 0.0], [0.0, 2 / 3]]
+
+
+@pytest.mark.skipif(
+    not DATA.is_dir(), reason="../shared/data/cgal-minkowski is not beside the repo"
+)
+def test_two_polygon_dat_needs_a_selector():
+    with pytest.raises(InputFormatError, match=r"holds 2 polygons; name one as .*comb.dat#1"):
+        read_geometry(DATA / "comb.dat")
+    first, second = read_cgal_dat(DATA / "comb.dat")
+    assert read_geometry(f"{DATA / 'comb.dat'}#2").tolist() == second.tolist()
+    with pytest.raises(InputFormatError, match="use #1..#2"):
+        read_geometry(f"{DATA / 'comb.dat'}#3")
+    assert read_geometry(DATA / "comb_part1.dat").shape == (53, 2)

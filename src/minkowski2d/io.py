@@ -63,7 +63,8 @@ def read_geometry(source: str | Path) -> Any:
     """Read one polygon (or point set) from a file path, or ``"-"`` for standard input.
 
     The format is recognised from the content (JSON point list, GeoJSON, WKT) or the
-    ``.dat`` suffix (CGAL's format; a file with two polygons gives the first).
+    ``.dat`` suffix (CGAL's format). A ``.dat`` file holding two polygons needs a
+    selector: ``comb.dat#1`` or ``comb.dat#2``.
 
     Returns
     -------
@@ -71,10 +72,22 @@ def read_geometry(source: str | Path) -> Any:
         An array for a simple ring or point list, a shapely Polygon for a polygon with
         holes, a MultiPolygon for several polygons.
     """
-    if str(source).endswith(".dat"):
-        items = read_cgal_dat(source)
+    s = str(source)
+    path, _, sel = s.rpartition("#") if ".dat#" in s else (s, "", "")
+    if path.endswith(".dat"):
+        items = read_cgal_dat(path)
+        if sel:
+            if not sel.isdigit() or not 1 <= int(sel) <= len(items):
+                raise InputFormatError(
+                    f"{s}: the file holds {len(items)} polygon(s); use #1..#{len(items)}"
+                )
+            return items[int(sel) - 1]
+        if len(items) > 1:
+            raise InputFormatError(
+                f"{s}: the file holds {len(items)} polygons; name one as {s}#1 ... {s}#{len(items)}"
+            )
         return items[0]
-    return parse_geometry(_read_text(source), name=str(source))
+    return parse_geometry(_read_text(source), name=s)
 
 
 def parse_geometry(text: str, name: str = "input") -> Any:
