@@ -324,6 +324,33 @@ def test_gjk_origin_on_simplex_edge_and_cycling_shapes():
         check_pair(ints, b)
 
 
+def test_gjk_cases_reported_against_other_libraries():
+    """2-D analogues of GJK failures reported elsewhere: boxes stacked face to face
+    (libccd issue 25: NaN direction), separated shapes ending on a collinear simplex
+    (FCL issue 293: 0/0), a point against a hull hitting the iteration cap (dolfinx
+    issue 3653)."""
+    sq = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+    for dy in (1.9, 2.0, math.nextafter(2.0, 3.0), math.nextafter(2.0, 0.0)):
+        for dx in (0.0, 0.5, 2.0):
+            b = [(x + dx, y + dy) for x, y in sq]
+            check_pair(sq, b)
+    for a, b in (
+        ([(0.0, 0.0), (1.0, 0.0)], [(2.0, 0.0), (3.0, 0.0)]),
+        ([(0.0, 0.0), (1.0, 1.0)], [(2.0, 2.0), (3.0, 3.0)]),
+        ([(0.0, 0.0), (2.0, 0.0), (1.0, 1e-9)], [(3.0, 0.0), (4.0, 0.0), (3.5, 1e-9)]),
+    ):
+        check_pair(a, b)
+    hull = [
+        (46.0659, 38.6251), (44.2764, 42.3867), (50.0397, 38.4649), (47.1963, 40.4563),
+        (48.0266, 38.5593), (45.1735, 40.495), (48.0415, 40.4456),
+    ]
+    for p in ([(44.2919, 39.7508)], [(46.0659, 38.6251)], [(47.0, 40.0)]):
+        assert mk.intersects(p, hull, hull=True, method="gjk") == mk.intersects(
+            p, hull, hull=True, method="sum"
+        )
+        check_pair(p, [tuple(v) for v in mk.convex_hull(hull).tolist()])
+
+
 # --------------------------------------------------------------------------------------
 # contains
 
