@@ -299,12 +299,38 @@ def run(kind, P, n_ref, n_coal, rng):
         print(f"| {m:<30} | {who:<26} | {t * 1e6:8.3f} | {ratio:>9} | {ag} |")
 
 
+def run_contains(rng, n_pts=1_000_000, n_ref=2000):
+    """contains: one random convex 64-gon, many points (about half inside), vs shapely's
+    prepared ``intersects_xy`` (boundary counts there too)."""
+    import shapely
+    from tests.test_collision import ref_inside
+
+    t = np.sort(rng.random(64)) * 2 * np.pi
+    poly = np.stack([np.cos(t), np.sin(t)], 1)
+    pts = rng.random((n_pts, 2)) * 2.4 - 1.2
+    mk.contains(poly, pts[:10])
+    t_ours, ours = best(lambda: mk.contains(poly, pts), 5)
+    g = shapely.Polygon(poly)
+    shapely.prepare(g)
+    t_sh, sh = best(lambda: shapely.intersects_xy(g, pts[:, 0], pts[:, 1]), 5)
+    H = [(Fraction(x), Fraction(y)) for x, y in mk.normalize(poly).tolist()]
+    sample = rng.choice(n_pts, size=n_ref, replace=False)
+    ref = {k: ref_inside(H, (Fraction(pts[k, 0]), Fraction(pts[k, 1]))) for k in sample}
+    print(f"\n## contains: convex 64-gon, {n_pts} points, {100 * ours.mean():.1f}% inside")
+    print("| library | ns/point | peer/ours | agreement with exact |")
+    print("|---|---|---|---|")
+    for who, tt, out in (("minkowski2d", t_ours, ours), ("shapely (prepared)", t_sh, sh)):
+        ok = sum(bool(out[k]) == ref[k] for k in sample) / len(sample)
+        ratio = "" if who == "minkowski2d" else f"{tt / t_ours:.2f}x"
+        print(f"| {who} | {tt / n_pts * 1e9:.1f} | {ratio} | {100 * ok:.2f}% agree |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--pairs", type=int, default=100_000)
     ap.add_argument("--ref", type=int, default=0, help="pairs checked exactly (default 1000/100)")
     ap.add_argument("--coal", type=int, default=20_000)
-    ap.add_argument("--only", choices=("hull8", "ngon64"), default=None)
+    ap.add_argument("--only", choices=("hull8", "ngon64", "contains"), default=None)
     args = ap.parse_args()
     rng = np.random.default_rng(2024)
     for kind in ("hull8", "ngon64"):
@@ -312,6 +338,8 @@ def main():
             continue
         n_ref = args.ref or (1000 if kind == "hull8" else 100)
         run(kind, args.pairs, n_ref, args.coal, rng)
+    if args.only in (None, "contains"):
+        run_contains(rng)
 
 
 if __name__ == "__main__":

@@ -1091,46 +1091,59 @@ def pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode
     return -1
 
 
+@njit(inline="always", **_JIT)
+def _orient0(x0, y0, x1, y1, qx, qy):
+    """Exact sign of orient((x0, y0), (x1, y1), q): the float filter inline, the exact
+    predicate only when it cannot tell."""
+    lft = (x1 - x0) * (qy - y0)
+    rgt = (y1 - y0) * (qx - x0)
+    det = lft - rgt
+    if abs(det) > ERRBOUND * (abs(lft) + abs(rgt)):
+        return 1 if det > 0.0 else -1
+    return cross_sign(x0, y0, x1, y1, x0, y0, qx, qy)
+
+
 @njit(**_JIT)
 def contains_points(p, ix, k, pts, out):
     """out[t] = 1 when pts[t] lies in the normalized convex polygon (p, ix[:k]), boundary
-    included; O(log k) per point by exact binary search over the fan from vertex 0."""
-    v0 = ix[0]
+    included; O(log k) per point by exact binary search over the fan from vertex 0 (over
+    gathered coordinates, the search steps without data-dependent branches)."""
+    X = np.empty(k)
+    Y = np.empty(k)
+    for t in range(k):
+        X[t] = p[ix[t], 0]
+        Y[t] = p[ix[t], 1]
+    x0 = X[0]
+    y0 = Y[0]
     for t in range(pts.shape[0]):
         qx = pts[t, 0]
         qy = pts[t, 1]
         if k == 1:
-            out[t] = qx == p[v0, 0] and qy == p[v0, 1]
+            out[t] = qx == x0 and qy == y0
             continue
-        v1 = ix[1]
-        o1 = cross_sign(p[v0, 0], p[v0, 1], p[v1, 0], p[v1, 1], p[v0, 0], p[v0, 1], qx, qy)
+        o1 = _orient0(x0, y0, X[1], Y[1], qx, qy)
         if o1 == 0:
             # on the line of edge 0 (the whole polygon, for a segment): between its ends?
-            out[t] = _between(p, v0, v1, qx, qy)
+            out[t] = _between(p, ix[0], ix[1], qx, qy)
             continue
         if o1 < 0 or k == 2:
             out[t] = False
             continue
-        vl = ix[k - 1]
-        ol = cross_sign(p[v0, 0], p[v0, 1], p[vl, 0], p[vl, 1], p[v0, 0], p[v0, 1], qx, qy)
+        ol = _orient0(x0, y0, X[k - 1], Y[k - 1], qx, qy)
         if ol > 0:
             out[t] = False
             continue
         if ol == 0:
-            out[t] = _between(p, v0, vl, qx, qy)
+            out[t] = _between(p, ix[0], ix[k - 1], qx, qy)
             continue
         lo = 1
         hi = k - 1
         while hi - lo > 1:
-            mid = (lo + hi) // 2
-            vm = ix[mid]
-            if cross_sign(p[v0, 0], p[v0, 1], p[vm, 0], p[vm, 1], p[v0, 0], p[v0, 1], qx, qy) >= 0:
-                lo = mid
-            else:
-                hi = mid
-        va = ix[lo]
-        vb = ix[hi]
-        out[t] = cross_sign(p[va, 0], p[va, 1], p[vb, 0], p[vb, 1], p[va, 0], p[va, 1], qx, qy) >= 0
+            mid = (lo + hi) >> 1
+            up = _orient0(x0, y0, X[mid], Y[mid], qx, qy) >= 0
+            lo = mid if up else lo
+            hi = hi if up else mid
+        out[t] = _orient0(X[lo], Y[lo], X[hi], Y[hi], qx, qy) >= 0
 
 
 @njit(inline="always", **_JIT)
