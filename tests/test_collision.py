@@ -324,6 +324,23 @@ def test_gjk_origin_on_simplex_edge_and_cycling_shapes():
         check_pair(ints, b)
 
 
+@pytest.mark.parametrize("seed", range(6))
+def test_large_polygons_take_gjk_under_auto(seed):
+    """40-60 vertices each: ``auto`` runs GJK; every method against the reference."""
+    rng = np.random.default_rng(seed)
+    q = [None, 1000][seed % 2]
+
+    def poly(n, c, r):
+        t = np.sort(rng.random(n)) * 2 * np.pi
+        p = np.stack([c[0] + r * np.cos(t), c[1] + r * np.sin(t)], 1)
+        return mk.convex_hull(np.round(p * q).astype(np.int64)) if q else p
+
+    a = poly(int(rng.integers(40, 60)), (0.0, 0.0), 1.0)
+    b = poly(int(rng.integers(40, 60)), rng.normal(size=2) * 1.2, 0.2 + rng.random())
+    assert len(a) + len(b) > 64
+    check_pair(a.tolist(), b.tolist())
+
+
 def test_gjk_cases_reported_against_other_libraries():
     """2-D analogues of GJK failures reported elsewhere: boxes stacked face to face
     (libccd issue 25: NaN direction), separated shapes ending on a collinear simplex
