@@ -407,6 +407,13 @@ def test_cspace_obstacle_is_the_collision_set(obstacle, robot, x, y):
         (np.array([(0, 0), (1, np.inf)] * 20), NonFiniteError, "a: vertex 1 has a non-finite"),
         ([(0, 0), (True, 1)], CoordinateTypeError, "a: vertex 1 has a bool"),
         ([(0, 0), ("1", 1)], CoordinateTypeError, "a: vertex 1 has a coordinate of type str"),
+        (
+            [(0, 0), (1, 0), (0, "x")],
+            CoordinateTypeError,
+            "a: vertex 2 has a coordinate of type str",
+        ),
+        ([5, 6, 7], ShapeError, "a: vertex 0 is 5, not an"),
+        ([(0, 0), (1, 0), (0, float("inf"))], NonFiniteError, "a: vertex 2 has a non-finite"),
         (np.array([[1 + 1j, 0]]), CoordinateTypeError, "not real numbers"),
         ("abc", ShapeError, "a: "),
     ],
@@ -415,6 +422,11 @@ def test_bad_input_errors(bad, exc, match):
     with pytest.raises(exc, match=match):
         mk.minkowski_sum(bad, [(0, 0), (1, 0), (0, 1)])
     assert issubclass(exc, GeometryError) and issubclass(exc, ValueError)
+
+
+def test_mixed_int_and_float_coordinates_are_float():
+    s = mk.minkowski_sum([(0, 0), (1, 0), (0, 1.5), (0, 1)], [(0, 0)])
+    assert s.dtype == np.float64 and s.tolist() == [[0.0, 0.0], [1.0, 0.0], [0.0, 1.5]]
 
 
 def test_polygon_with_holes_is_not_convex():

@@ -61,14 +61,25 @@ def _not_convex(name: str, code: int, vertex: int) -> NotConvexError:
 # pure-Python path
 
 
-def _py_fast(pts: list, kind: str) -> tuple[list, list, int] | None:
+def _py_fast(pts: Any, kind: str, raw: bool = False) -> tuple[list, list, int] | None:
     """The common case of :func:`_py_normalize` in one loop: distinct vertices, every turn
     strictly the same way (certain under the float filter), edges winding once (one
     upper-to-lower half-plane transition). Returns None to defer to the general pass,
-    which decides everything else exactly."""
+    which decides everything else exactly.
+
+    With ``raw`` the caller's own sequence is read unvalidated: every vertex must then be
+    a pair of Python ints (``kind`` "int") or of finite Python floats ("float"), else None
+    (and the caller validates properly, raising the right error).
+    """
     n = len(pts)
-    cx, cy = pts[-1]
-    px, py = pts[-2]
+    try:
+        cx, cy = pts[-1]
+        px, py = pts[-2]
+    except (TypeError, ValueError):
+        return None
+    T = float if kind == FLOAT else int
+    if raw and not (type(cx) is type(cy) is type(px) is type(py) is T):
+        return None
     ux = cx - px
     uy = cy - py
     upu = uy > 0 or (uy == 0 and ux > 0)
@@ -77,7 +88,13 @@ def _py_fast(pts: list, kind: str) -> tuple[list, list, int] | None:
     b = 0
     bx, by = pts[0]
     k = 0
-    for nx, ny in pts:
+    for p in pts:
+        try:
+            nx, ny = p
+        except (TypeError, ValueError):
+            return None
+        if raw and (type(nx) is not T or type(ny) is not T or (fl and ((nx - nx) or (ny - ny)))):
+            return None
         vx = nx - cx
         vy = ny - cy
         if fl:
@@ -642,8 +659,18 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
     """
     ta = type(a)
     if (ta is list or ta is tuple) and type(b) is ta and not hull:
-        if len(a) <= TINY and len(b) <= TINY:
-            # the tiny path, without the general dispatch layers
+        na, nb = len(a), len(b)
+        if 3 <= na <= TINY and 3 <= nb <= TINY:
+            # the tiny path: validation fused into the one-loop normalization (see _py_fast)
+            try:
+                k0 = INT if type(a[0][0]) is int else FLOAT
+            except (TypeError, IndexError, KeyError):
+                k0 = INT  # malformed: _py_fast gives None, py_points below raises
+            fa = _py_fast(a, k0, raw=True)
+            fb = _py_fast(b, k0, raw=True) if fa is not None else None
+            if fb is not None:
+                return _flat_to_array(_py_merge(fa[0], fa[2], fb[0], fb[2], k0, flat=True), k0)
+        if na <= TINY and nb <= TINY:
             A, ka = py_points(a, "a")
             B, kb = py_points(b, "b")
             if ka == kb:
