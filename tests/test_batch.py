@@ -16,7 +16,9 @@ SETTINGS = settings(max_examples=60, deadline=None, suppress_health_check=[Healt
 
 
 @SETTINGS
-@given(st.lists(st.tuples(convex_int(max_size=15), convex_int(max_size=15)), min_size=1, max_size=20))
+@given(
+    st.lists(st.tuples(convex_int(max_size=15), convex_int(max_size=15)), min_size=1, max_size=20)
+)
 def test_pairwise_identical_to_single(pairs):
     As = [np.array(a) for a, _ in pairs]
     Bs = [np.array(b) for _, b in pairs]
@@ -29,7 +31,11 @@ def test_pairwise_identical_to_single(pairs):
 
 
 @SETTINGS
-@given(st.lists(st.tuples(convex_float(max_size=15), convex_float(max_size=15)), min_size=1, max_size=10))
+@given(
+    st.lists(
+        st.tuples(convex_float(max_size=15), convex_float(max_size=15)), min_size=1, max_size=10
+    )
+)
 def test_pairwise_floats_identical_to_single(pairs):
     r = mk.minkowski_sum_many([np.array(a) for a, _ in pairs], [np.array(b) for _, b in pairs])
     for k, (a, b) in enumerate(pairs):
