@@ -658,6 +658,19 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
     [[0, 0], [3, 0], [3, 1], [1, 3], [0, 3]]
     """
     ta = type(a)
+    if ta is np.ndarray and type(b) is np.ndarray and not hull:
+        # tiny int64/float64 arrays: the same fused path, on their Python values
+        if (
+            a.ndim == b.ndim == 2
+            and a.shape[1] == b.shape[1] == 2
+            and 3 <= a.shape[0] <= TINY
+            and 3 <= b.shape[0] <= TINY
+            and a.dtype == b.dtype
+            and a.dtype in (np.int64, np.float64)
+        ):
+            a = a.tolist()
+            b = b.tolist()
+            ta = list
     if (ta is list or ta is tuple) and type(b) is ta and not hull:
         na, nb = len(a), len(b)
         if 3 <= na <= TINY and 3 <= nb <= TINY:
