@@ -36,7 +36,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ._kernels import _JIT, ERRBOUND, _grow, _normalize, _two_diff, _two_prod, cross_sign
+from ._kernels import _JIT, ERRBOUND, _grow, _normalize, _two_prod, cross_expansion, cross_sign
 
 # mode of the pair kernel
 INTERSECTS = 0
@@ -100,20 +100,8 @@ def _cross_value(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y):
     bound = ERRBOUND * (abs(lft) + abs(rgt))
     if bound <= _REL * abs(det):
         return det
-    uxh, uxl = _two_diff(a1x, a0x)
-    uyh, uyl = _two_diff(a1y, a0y)
-    vxh, vxl = _two_diff(b1x, b0x)
-    vyh, vyl = _two_diff(b1y, b0y)
     e = np.empty(40)
-    m = 0
-    for p, q in ((uxh, vyh), (uxh, vyl), (uxl, vyh), (uxl, vyl)):
-        x, y = _two_prod(p, q)
-        m = _grow(e, m, y)
-        m = _grow(e, m, x)
-    for p, q in ((uyh, vxh), (uyh, vxl), (uyl, vxh), (uyl, vxl)):
-        x, y = _two_prod(p, q)
-        m = _grow(e, m, -y)
-        m = _grow(e, m, -x)
+    m = cross_expansion(e, a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y)
     s = 0.0
     for t in range(m):
         s += e[t]

@@ -86,12 +86,14 @@ def _grow(e, m, b):
 
 
 @njit(**_JIT)
-def _cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y):
+def cross_expansion(e, a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y):
+    """Write (a1 - a0) x (b1 - b0) exactly into ``e`` (size >= 40) as a nonoverlapping
+    expansion, smallest component first; returns its length. Its last component has
+    the sign of the value; their sum (smallest first) is within a few ulps of it."""
     uxh, uxl = _two_diff(a1x, a0x)
     uyh, uyl = _two_diff(a1y, a0y)
     vxh, vxl = _two_diff(b1x, b0x)
     vyh, vyl = _two_diff(b1y, b0y)
-    e = np.empty(40)
     m = 0
     # + ux * vy
     for p, q in ((uxh, vyh), (uxh, vyl), (uxl, vyh), (uxl, vyl)):
@@ -103,6 +105,13 @@ def _cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y):
         x, y = _two_prod(p, q)
         m = _grow(e, m, -y)
         m = _grow(e, m, -x)
+    return m
+
+
+@njit(**_JIT)
+def _cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y):
+    e = np.empty(40)
+    m = cross_expansion(e, a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y)
     return _sgn(e[m - 1])
 
 
