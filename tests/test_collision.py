@@ -12,7 +12,7 @@ from fractions import Fraction as F
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
@@ -100,6 +100,11 @@ def rel_err2(x: float, exact2: F) -> float:
     s = x * x if x >= 0 else -x * x
     if exact2 == 0:
         return float(abs(s))
+    if abs(exact2) < F(2) ** -2044:
+        # the exact value is below float64's normal range: a subnormal result carries an
+        # absolute error up to 2**-1074 (a value under 2**-1075 rounds to 0.0), so only
+        # its tininess can be asked for
+        return 0.0 if abs(x) <= F(2) ** -1021 else 1.0
     return float(abs(s - exact2) / abs(exact2))
 
 
@@ -181,6 +186,7 @@ def test_floats_shifted_near_contact(a, gap, turn):
     w = (max(xs) - min(xs), max(ys) - min(ys))
     v = [(w[0] + gap, 0.0), (0.0, w[1] + gap), (-w[0] - gap, 0.0), (w[0] / 2, w[1] / 2)][turn % 4]
     b = [(x + v[0], y + v[1]) for x, y in a]
+    assume(mk.is_convex(b))  # the rounded shift can turn a near-straight vertex reflex
     check_pair(a, b)
 
 

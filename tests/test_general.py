@@ -77,9 +77,7 @@ def assert_same(r, s, what=""):
 @pytest.mark.parametrize(("p", "q"), CGAL_PAIRS, ids=[f"{p}+{q}" for p, q in CGAL_PAIRS])
 def test_cgal_pairs_all_methods_agree(p, q):
     a, b = read_dat(p), read_dat(q)
-    results = [
-        mk.minkowski_sum_general(a, b, method=m, decomposition=d) for m, d in METHODS
-    ]
+    results = [mk.minkowski_sum_general(a, b, method=m, decomposition=d) for m, d in METHODS]
     ref = results[0]
     assert ref.area > 0 and ref.is_valid
     for (m, d), r in zip(METHODS[1:], results[1:], strict=True):
@@ -332,8 +330,13 @@ def check_erosion_by_sampling(a, b, n=300, seed=0):
 
 @needs_data
 @pytest.mark.parametrize(
-    ("p", "q"), [("comb_part1", "small_robot"), ("rooms_part1", "small_convex_robot"),
-                 ("pwh4", "pwh2"), ("knife_part1", "small_convex_robot")]
+    ("p", "q"),
+    [
+        ("comb_part1", "small_robot"),
+        ("rooms_part1", "small_convex_robot"),
+        ("pwh4", "pwh2"),
+        ("knife_part1", "small_convex_robot"),
+    ],
 )
 def test_erosion_sampling_corpus(p, q):
     check_erosion_by_sampling(read_dat(p), read_dat(q))
@@ -409,3 +412,27 @@ def test_erosion_then_dilation_is_inside():
     E = mk.minkowski_difference(a, b)
     opened = mk.minkowski_sum_general(E, b)
     assert opened.difference(shapely.Polygon(a)).area <= 1e-9
+
+
+@pytest.mark.parametrize(
+    "a, b",
+    [
+        # nearly antiparallel pushed edges: the strip between them is inverted (empty)
+        ([(-154, -296), (0, 0), (-232, 229), (-351, 0)], [(0, 0), (505, 296)]),
+        # three deque lines through one point that another half-plane excludes
+        ([(-5, -1), (1, 2), (2, 3), (-3, 1)], [(-4, -2), (5, -1)]),
+        (
+            [(-45, -26), (-26, -25), (34, 21), (41, 44), (37, 48), (-18, 41)],
+            [(31, -38), (40, 27), (-32, 30), (-30, -4)],
+        ),
+        ([(0, -2), (5, 2), (-1, 3), (-2, -1)], [(0, -5), (2, -2), (-3, 1)]),
+    ],
+)
+def test_convex_erosion_empty_cases(a, b):
+    """Regressions: each erosion is empty (no translate of B fits in A), which the
+    brute-force intersection of A's translates confirms."""
+    ref = shapely.intersection_all(
+        [shapely.affinity.translate(shapely.Polygon(a), -x, -y) for x, y in b]
+    )
+    assert ref.is_empty or ref.area == 0
+    assert mk.minkowski_difference(a, b).is_empty

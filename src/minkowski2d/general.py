@@ -595,22 +595,43 @@ def _erode_convex(A: np.ndarray, B: np.ndarray) -> Any:
         (q, d) = ln
         return cr(d[0], d[1], p[0] - q[0], p[1] - q[1])  # > 0 inside (left), 0 on the line
 
-    # half-plane intersection of lines already sorted by angle (A is normalized, so no
-    # two of its edges share a direction and consecutive ones turn by less than pi)
-    dq: list = []
+    # Half-plane intersection of lines sorted by angle (the deque algorithm). It is only
+    # correct while the partial intersection stays bounded, so the four sides of a box
+    # around A - B[0] (which contains the erosion) are merged into the angle order.
+    xs = [p[0] - Be[0][0] for p in Ae]
+    ys = [p[1] - Be[0][1] for p in Ae]
+    x0, x1, y0, y1 = min(xs) - 1, max(xs) + 1, min(ys) - 1, max(ys) + 1
+    box = [((x0, y0), (1, 0)), ((x1, y0), (0, 1)), ((x1, y1), (-1, 0)), ((x0, y1), (0, -1))]
+    merged: list = []
+    k = 0
     for ln in lines:
+        while k < 4 and not before(ln[1], box[k][1]):
+            merged.append(box[k])
+            k += 1
+        merged.append(ln)
+    merged.extend(box[k:])
+
+    dq: list = []
+    for ln in merged:
         while len(dq) >= 2 and side(ln, inter(dq[-2], dq[-1])) < 0:
             dq.pop()
         while len(dq) >= 2 and side(ln, inter(dq[0], dq[1])) < 0:
             dq.pop(0)
         if dq:
             d0, d1 = dq[-1][1], ln[1]
-            if cr(d0[0], d0[1], d1[0], d1[1]) == 0:  # antiparallel after popping
-                s = side(ln, dq[-1][0])
-                if s < 0:
-                    return shapely.Polygon()  # the strip between them is empty
-                if s == 0:
-                    return _on_line(ln, lines, side, cr)  # zero width: a segment or point
+            if cr(d0[0], d0[1], d1[0], d1[1]) == 0:
+                if d0[0] * d1[0] + d0[1] * d1[1] < 0:  # antiparallel after popping
+                    s = side(ln, dq[-1][0])
+                    if s < 0:
+                        return shapely.Polygon()  # the strip between them is empty
+                    if s == 0:
+                        return _on_line(ln, lines, side, cr)  # zero width: segment or point
+                    return shapely.Polygon()
+                # same direction: keep the more restrictive of the two
+                if side(ln, dq[-1][0]) < 0:
+                    dq.pop()
+                else:
+                    continue
         dq.append(ln)
     while len(dq) >= 3 and side(dq[0], inter(dq[-2], dq[-1])) < 0:
         dq.pop()
@@ -627,6 +648,19 @@ def _erode_convex(A: np.ndarray, B: np.ndarray) -> Any:
                 return shapely.Polygon()
             return _on_line(l1, lines, side, cr)
         pts.append(inter(l1, l2))
+    # A candidate without area (lines through one point, or all vertices on a line) can
+    # survive the strict cleanup although other half-planes exclude it: decide those
+    # exactly against every half-plane.
+    uniq = list(dict.fromkeys(pts))
+    p0 = uniq[0]
+    far = max(uniq, key=lambda p: abs(p[0] - p0[0]) + abs(p[1] - p0[1]))
+    if far == p0:
+        if all(side(ln, p0) >= 0 for ln in lines):
+            return _from_exact_points([p0])
+        return shapely.Polygon()
+    d = (far[0] - p0[0], far[1] - p0[1])
+    if all(cr(d[0], d[1], p[0] - p0[0], p[1] - p0[1]) == 0 for p in uniq):
+        return _on_line((p0, d), lines, side, cr)
     return _from_exact_points(pts)
 
 
