@@ -510,3 +510,16 @@ def test_errors():
         mk.intersects_many([SQ, SQ], [SQ])
     with pytest.raises(TypeError):
         mk.intersects(SQ, SQ, "gjk")  # method is keyword-only
+
+
+def test_common_point_on_a_thin_minkowski_difference():
+    """Regression: two nearly parallel overlapping segments make A ⊕ (−B) a sliver; the
+    witnesses of distance 0 must still be a common point (float barycentric weights had
+    put them 524,289 apart)."""
+    a = [(-1.0, 1e-09), (0.0, 349526.0)]
+    w = (1.0, 349526.0 - 1e-09)  # the falsifying example: B = A moved by half its extent
+    b = [(x + w[0] / 2, y + w[1] / 2) for x, y in a]
+    check_pair(a, b)
+    d = mk.distance(a, b)
+    assert d.distance == 0.0
+    assert math.hypot(*(d.point_a - d.point_b)) <= 1e-9

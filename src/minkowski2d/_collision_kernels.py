@@ -609,15 +609,27 @@ def _common_point(pa, ia, na, pb, ib, nb, kind, ii, jj, K, out):
     b1 = ib[jj[lo]]
     a2 = ia[ii[hi]]
     b2 = ib[jj[hi]]
-    x0 = pa[a0, 0] - pb[b0, 0]
-    y0 = pa[a0, 1] - pb[b0, 1]
-    x1 = pa[a1, 0] - pb[b1, 0]
-    y1 = pa[a1, 1] - pb[b1, 1]
-    x2 = pa[a2, 0] - pb[b2, 0]
-    y2 = pa[a2, 1] - pb[b2, 1]
-    l0 = max(x1 * y2 - y1 * x2, 0.0)
-    l1 = max(x2 * y0 - y2 * x0, 0.0)
-    l2 = max(x0 * y1 - y0 * x1, 0.0)
+    # The weights are cross products of D's vertices w_i = a_i - b_i. On a thin D a float
+    # evaluation cancels catastrophically (witnesses far from A ∩ B), so each is taken
+    # from the accurate cross value of the two differences.
+    l0 = max(
+        _cross_value(
+            pb[b1, 0], pb[b1, 1], pa[a1, 0], pa[a1, 1], pb[b2, 0], pb[b2, 1], pa[a2, 0], pa[a2, 1]
+        ),
+        0.0,
+    )
+    l1 = max(
+        _cross_value(
+            pb[b2, 0], pb[b2, 1], pa[a2, 0], pa[a2, 1], pb[b0, 0], pb[b0, 1], pa[a0, 0], pa[a0, 1]
+        ),
+        0.0,
+    )
+    l2 = max(
+        _cross_value(
+            pb[b0, 0], pb[b0, 1], pa[a0, 0], pa[a0, 1], pb[b1, 0], pb[b1, 1], pa[a1, 0], pa[a1, 1]
+        ),
+        0.0,
+    )
     s = l0 + l1 + l2
     if not s > 0.0:
         l0 = 1.0
@@ -738,9 +750,11 @@ def _support(p, ix, n, dx, dy, sgn, c, mode, w0a, w0b, w1a, w1b, pa, pb, ia, ib,
         moved = False
         for step in (1, n - 1):
             nb_ = (best + step) % n
-            if _dir_sign(p, ix[best], ix[nb_], mode, w0a, w0b, w1a, w1b, pa, pb, ia, ib, c) * (
-                sign * sgn
-            ) > 0:
+            if (
+                _dir_sign(p, ix[best], ix[nb_], mode, w0a, w0b, w1a, w1b, pa, pb, ia, ib, c)
+                * (sign * sgn)
+                > 0
+            ):
                 best = nb_
                 moved = True
                 break
@@ -947,8 +961,16 @@ def _gjk(pa, ia, na, pb, ib, nb):
             b0 = ib[w0b]
             av = ia[sA]
             bv = ib[sB]
-            h = _dot_sign(pb[bv, 0], pb[bv, 1], pa[av, 0], pa[av, 1],
-                          pa[a0, 0], pa[a0, 1], pb[b0, 0], pb[b0, 1])
+            h = _dot_sign(
+                pb[bv, 0],
+                pb[bv, 1],
+                pa[av, 0],
+                pa[av, 1],
+                pa[a0, 0],
+                pa[a0, 1],
+                pb[b0, 0],
+                pb[b0, 1],
+            )
         else:
             h = sgn * _wcross(c, pa, pb, ia, ib, w0a, w0b, w1a, w1b, sA, sB, -1, -1, False)
         if h < 0:
@@ -995,8 +1017,10 @@ def _gjk(pa, ia, na, pb, ib, nb):
                 continue
             fi = i0 if e == 0 else i1
             fj = j0 if e == 0 else j1
-            if (_seg_dot(c, pa, pb, ia, ib, fi, fj, sA, sB) > 0
-                    and _seg_dot(c, pa, pb, ia, ib, sA, sB, fi, fj) > 0):
+            if (
+                _seg_dot(c, pa, pb, ia, ib, fi, fj, sA, sB) > 0
+                and _seg_dot(c, pa, pb, ia, ib, sA, sB, fi, fj) > 0
+            ):
                 sa_[0] = fi
                 sb_[0] = fj
                 sa_[1] = sA
@@ -1011,10 +1035,14 @@ def _gjk(pa, ia, na, pb, ib, nb):
         # a vertex region: the new point's (the others are guards)
         vi = sA
         vj = sB
-        if not (_seg_dot(c, pa, pb, ia, ib, sA, sB, i0, j0) <= 0
-                and _seg_dot(c, pa, pb, ia, ib, sA, sB, i1, j1) <= 0):
-            if (_seg_dot(c, pa, pb, ia, ib, i0, j0, i1, j1) <= 0
-                    and _seg_dot(c, pa, pb, ia, ib, i0, j0, sA, sB) <= 0):
+        if not (
+            _seg_dot(c, pa, pb, ia, ib, sA, sB, i0, j0) <= 0
+            and _seg_dot(c, pa, pb, ia, ib, sA, sB, i1, j1) <= 0
+        ):
+            if (
+                _seg_dot(c, pa, pb, ia, ib, i0, j0, i1, j1) <= 0
+                and _seg_dot(c, pa, pb, ia, ib, i0, j0, sA, sB) <= 0
+            ):
                 vi = i0
                 vj = j0
             else:
@@ -1056,8 +1084,8 @@ def pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode
         y = qb[q]
         oa = offa[x]
         ob = offb[y]
-        ia = ida[oa: oa + ka[x]]
-        ib = idb[ob: ob + kb[y]]
+        ia = ida[oa : oa + ka[x]]
+        ib = idb[ob : ob + kb[y]]
         if mode == INTERSECTS or (mode == AUTO and ka[x] + kb[y] <= AUTO_SUM_MAX):
             hit[q] = _intersects(pa, ia, ka[x], sa[x], pb, ib, kb[y], sb[y], AX, AY, BX, BY)
         elif mode == GJK or mode == AUTO:
@@ -1067,9 +1095,27 @@ def pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode
             hit[q] = r
         else:
             hit[q] = _collide(
-                pa, ia, ka[x], sa[x], inva[oa: oa + ka[x]],
-                pb, ib, kb[y], sb[y], invb[ob: ob + kb[y]],
-                mode, kind, ii, jj, vis, cv, AX, AY, BX, BY, res[q],
+                pa,
+                ia,
+                ka[x],
+                sa[x],
+                inva[oa : oa + ka[x]],
+                pb,
+                ib,
+                kb[y],
+                sb[y],
+                invb[ob : ob + kb[y]],
+                mode,
+                kind,
+                ii,
+                jj,
+                vis,
+                cv,
+                AX,
+                AY,
+                BX,
+                BY,
+                res[q],
             )
             if mode == DISTANCE:
                 if res[q, 0] < 0.0:
