@@ -93,7 +93,9 @@ def _py_fast(pts: Any, kind: str, raw: bool = False) -> tuple[list, list, int] |
             nx, ny = p
         except (TypeError, ValueError):
             return None
-        if raw and (type(nx) is not T or type(ny) is not T or (fl and ((nx - nx) or (ny - ny)))):
+        # (a NaN or inf coordinate needs no check here: it makes this vertex's turn NaN or
+        # inf, which no comparison below certifies, so the full validation reports it)
+        if raw and (type(nx) is not T or type(ny) is not T):
             return None
         vx = nx - cx
         vy = ny - cy
@@ -101,7 +103,7 @@ def _py_fast(pts: Any, kind: str, raw: bool = False) -> tuple[list, list, int] |
             lft = ux * vy
             rgt = uy * vx
             d = lft - rgt
-            bound = ERRBOUND * (abs(lft) + abs(rgt))
+            bound = ERRBOUND * abs(lft + rgt)  # = (|l| + |r|) when l, r share a sign; else sure
             if abs(d) <= bound or bound < MINBOUND:
                 return None
         else:
@@ -264,7 +266,9 @@ def _py_merge(
                     lft = ux * vy
                     rgt = uy * vx
                     d = lft - rgt
-                    bound = ERRBOUND * (abs(lft) + abs(rgt))
+                    bound = ERRBOUND * abs(
+                        lft + rgt
+                    )  # = (|l| + |r|) when l, r share a sign; else sure
                     if abs(d) <= bound or bound < MINBOUND:
                         d = _cross_float((ax, ay), (a1x, a1y), (bx, by), (b1x, b1y))
                 else:
