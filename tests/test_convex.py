@@ -3,6 +3,7 @@ speeds, degenerate inputs, huge and near-parallel coordinates, and every error."
 
 from __future__ import annotations
 
+from contextlib import contextmanager
 from fractions import Fraction
 
 import numpy as np
@@ -25,6 +26,17 @@ from . import oracle
 from .strategies import convex_float, convex_int
 
 SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+
+
+@contextmanager
+def kernels_forced():
+    """Every array input goes through the compiled kernels while inside (for hypothesis
+    tests, which cannot take function-scoped fixtures)."""
+    convex.TINY, old = 0, convex.TINY
+    try:
+        yield
+    finally:
+        convex.TINY = old
 
 
 @pytest.fixture
@@ -75,11 +87,8 @@ def test_int_lists_match_oracle(a, b):
 @SETTINGS
 @given(convex_int(max_size=60), convex_int(max_size=60))
 def test_int_kernel_matches_oracle(a, b):
-    convex.TINY, old = 0, convex.TINY
-    try:
+    with kernels_forced():
         r = mk.minkowski_sum(np.array(a), np.array(b))
-    finally:
-        convex.TINY = old
     assert r.dtype == np.int64
     assert_matches_oracle(r, a, b)
 
@@ -93,11 +102,8 @@ def test_float_lists_match_oracle(a, b):
 @SETTINGS
 @given(convex_float(max_size=60), convex_float(max_size=60))
 def test_float_kernel_matches_oracle(a, b):
-    convex.TINY, old = 0, convex.TINY
-    try:
+    with kernels_forced():
         r = mk.minkowski_sum(np.array(a, dtype=float), np.array(b, dtype=float))
-    finally:
-        convex.TINY = old
     assert_matches_oracle(r, a, b)
 
 
@@ -237,11 +243,8 @@ def test_associative(a, b, c):
 @given(convex_int(max_size=40), convex_int(max_size=40))
 def test_three_speeds_identical(a, b):
     tiny = mk.minkowski_sum(a, b)
-    convex.TINY, old = 0, convex.TINY
-    try:
+    with kernels_forced():
         kern = mk.minkowski_sum(np.array(a), np.array(b))
-    finally:
-        convex.TINY = old
     many = mk.minkowski_sum_many([np.array(a)], [np.array(b)])
     assert tiny.tolist() == kern.tolist() == many[0].tolist()
     assert tiny.dtype == kern.dtype == many.coords.dtype

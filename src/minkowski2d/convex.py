@@ -691,9 +691,7 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
             A, ka = py_points(a, "a")
             B, kb = py_points(b, "b")
             if ka == kb:
-                qa, _, sa = _py_normalize(A, ka, "a")
-                qb, _, sb = _py_normalize(B, kb, "b")
-                return _flat_to_array(_py_merge(qa, sa, qb, sb, ka, flat=True), ka)
+                return _sum_lists(A, B, ka, False)
     da, ka, la = _prepare(a, "a")
     db, kb, lb = _prepare(b, "b")
     A, B, kind, is_list = _unify(da, ka, la, db, kb, lb)
