@@ -27,11 +27,67 @@ __all__ = [
     "SelfIntersectionError",
     "OverflowGeometryError",
     "InputFormatError",
+    "NoPathError",
+    "ResourceLimitError",
 ]
 
 
 class GeometryError(ValueError):
-    """Base class of every input or result problem minkowski2d reports."""
+    """Base class of every input or result problem minkowski2d reports.
+
+    Parameters
+    ----------
+    message : str
+        The whole human-readable message (it already names the argument and vertex).
+    argument : str, optional
+        The argument, file or batch member at fault (``"a"``, ``"As[3]"``, a file name).
+    vertex : int, optional
+        Index of the offending vertex in the caller's own numbering.
+    hint : str, optional
+        What the caller can do about it.
+
+    Callers (the CLI, the animation page) read these fields; nobody parses the message.
+
+    Examples
+    --------
+    >>> e = GeometryError("a: vertex 2 is bad", argument="a", vertex=2, hint="drop it")
+    >>> (e.argument, e.vertex, e.hint)
+    ('a', 2, 'drop it')
+    """
+
+    def __init__(
+        self,
+        message: str = "",
+        *args: object,
+        argument: str | None = None,
+        vertex: int | None = None,
+        hint: str | None = None,
+    ) -> None:
+        super().__init__(message, *args)
+        if argument is None and isinstance(message, str) and ": " in message:
+            head = message.split(": ", 1)[0]
+            if head and " " not in head and len(head) <= 64:
+                argument = head
+        self.argument = argument
+        self.vertex = vertex
+        self.hint = hint
+
+    def to_dict(self) -> dict[str, object]:
+        """The error as a JSON-ready mapping (``type``, ``message``, ``argument``,
+        ``vertex``, ``hint``).
+
+        Examples
+        --------
+        >>> GeometryError("b: empty", argument="b").to_dict()["argument"]
+        'b'
+        """
+        return {
+            "type": type(self).__name__,
+            "message": str(self),
+            "argument": self.argument,
+            "vertex": self.vertex,
+            "hint": self.hint,
+        }
 
 
 class EmptyGeometryError(GeometryError):
@@ -59,9 +115,15 @@ class NotConvexError(GeometryError):
         Index, in the caller's input, of the vertex where convexity fails.
     """
 
-    def __init__(self, message: str, vertex: int | None = None) -> None:
-        super().__init__(message)
-        self.vertex = vertex
+    def __init__(
+        self,
+        message: str = "",
+        vertex: int | None = None,
+        *,
+        argument: str | None = None,
+        hint: str | None = None,
+    ) -> None:
+        super().__init__(message, argument=argument, vertex=vertex, hint=hint)
 
 
 class SelfIntersectionError(GeometryError):
@@ -74,3 +136,11 @@ class OverflowGeometryError(GeometryError):
 
 class InputFormatError(GeometryError):
     """A file or text could not be read as any supported polygon format."""
+
+
+class NoPathError(GeometryError):
+    """A motion-planning query has no collision-free path."""
+
+
+class ResourceLimitError(GeometryError):
+    """The computation would exceed a stated bound on work or memory."""
