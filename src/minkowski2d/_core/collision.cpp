@@ -1,0 +1,9 @@
+// collision.cpp -- intersects / distance / penetration walks, exact GJK, contains.
+// (Being ported from the numba kernels; bound into minkowski2d._core._ext.)
+#include <nanobind/nanobind.h>
+
+namespace nb = nanobind;
+
+namespace mk_bind {
+void bind_collision(nb::module_& m) { (void)m; }
+}  // namespace mk_bind

@@ -1,0 +1,315 @@
+// convex.hpp -- normalization, convexity and the O(n + m) merge of convex polygons.
+//
+// One normalization and one merge serve the single call, the batch, the trace and the
+// collision walks. Polygons are (n, 2) row-major coordinate arrays of T (int64_t with
+// |x| < 2^62, or finite double); every decision goes through mk::cross_sign.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "exact.hpp"
+
+namespace mk {
+
+template <class T>
+inline int orient(const T* p, i64 i, i64 j, i64 k) {
+  return cross_sign(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1], p[2 * i], p[2 * i + 1],
+                    p[2 * k], p[2 * k + 1]);
+}
+
+// The edge i -> j points into the half-plane y > 0, or along +x.
+template <class T>
+inline bool upper(const T* p, i64 i, i64 j) {
+  return p[2 * j + 1] > p[2 * i + 1] || (p[2 * j + 1] == p[2 * i + 1] && p[2 * j] > p[2 * i]);
+}
+
+// A normalized polygon: k vertices, CCW from the bottom-most (lowest y, then lowest x),
+// no duplicate or collinear vertex; `split` is the index of the first edge pointing into
+// the lower half-plane. Position t is idx[t] (explicit) or, when step != 0, the implicit
+// rotation b + step * t wrapped into [lo, lo + n) -- no index array is written then.
+struct Norm {
+  i64 k = 0, split = 0, b = 0, step = 0, lo = 0, n = 0;
+  const i64* idx = nullptr;
+  int code = OK;
+  i64 vertex = 0;  // offending vertex (relative to lo) when code != OK
+  inline i64 at(i64 t) const {
+    if (step == 0) return t < k ? idx[t] : idx[0];
+    i64 v = b + step * t;
+    if (v >= lo + n)
+      v -= n;
+    else if (v < lo)
+      v += n;
+    return v;
+  }
+};
+
+template <class T>
+inline bool finite_coord(T v) {
+  if constexpr (std::is_floating_point_v<T>)
+    return v - v == 0;
+  else
+    return true;
+}
+
+// Start-independent test for the common case: every vertex distinct, every turn strictly
+// the same way (certain under the filter), one upper->lower transition. +1 CCW, -1 CW,
+// 0 unsure (the general pass decides), 2 a non-finite coordinate (vertex in *bad).
+template <class T>
+inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad) {
+  i64 n = hi - lo;
+  if constexpr (std::is_floating_point_v<T>) {
+    double acc = 0.0;
+    for (i64 i = lo; i < hi; ++i) acc += (p[2 * i] - p[2 * i]) + (p[2 * i + 1] - p[2 * i + 1]);
+    if (acc != 0.0 || acc - acc != 0.0) {
+      for (i64 i = lo; i < hi; ++i)
+        if (!(p[2 * i] - p[2 * i] == 0.0 && p[2 * i + 1] - p[2 * i + 1] == 0.0)) {
+          *bad = i - lo;
+          return 2;
+        }
+    }
+  }
+  if (n < 3) return 0;
+  i64 pos = 0, neg = 0, trans = 0;
+  for (i64 t = 0; t < n; ++t) {
+    i64 i = lo + t;
+    i64 h = t > 0 ? i - 1 : hi - 1;
+    i64 k = t + 1 < n ? i + 1 : lo;
+    T ux = p[2 * i] - p[2 * h], uy = p[2 * i + 1] - p[2 * h + 1];
+    T vx = p[2 * k] - p[2 * i], vy = p[2 * k + 1] - p[2 * i + 1];
+    if constexpr (std::is_floating_point_v<T>) {
+      double l = ux * vy, r = uy * vx, det = l - r;
+      double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
+      pos += (det > bnd) & (bnd >= MINBOUND);
+      neg += (det < -bnd) & (bnd >= MINBOUND);
+    } else {
+      i128 l = (i128)ux * vy, r = (i128)uy * vx;
+      pos += l > r;
+      neg += l < r;
+    }
+    bool up1 = (uy > 0) | ((uy == 0) & (ux > 0));
+    bool up2 = (vy > 0) | ((vy == 0) & (vx > 0));
+    trans += up1 & !up2;
+  }
+  if (trans != 1) return 0;
+  if (pos == n) return 1;
+  if (neg == n) return -1;
+  return 0;
+}
+
+// Normalize the convex polygon p[lo:hi] (any orientation and start). keep (i64) and turn
+// (int8) are scratch of size >= hi - lo; out receives the vertex indices unless the
+// common case held (then step != 0 and out is not written).
+template <class T>
+inline Norm normalize(const T* p, i64 lo, i64 hi, i64* keep, std::int8_t* turn, i64* out) {
+  Norm r;
+  r.lo = lo;
+  r.n = hi - lo;
+  r.idx = out;
+  i64 bad = 0;
+  int s = fast_check(p, lo, hi, &bad);
+  if (s == 2) {
+    r.code = NONFINITE;
+    r.vertex = bad;
+    return r;
+  }
+  if (s != 0) {
+    i64 n = hi - lo, b = lo;
+    for (i64 i = lo + 1; i < hi; ++i)
+      if (p[2 * i + 1] < p[2 * b + 1] || (p[2 * i + 1] == p[2 * b + 1] && p[2 * i] < p[2 * b]))
+        b = i;
+    r.k = n;
+    r.b = b;
+    r.step = s;
+    // halves run upper...upper lower...lower from the bottom vertex: binary search
+    i64 t0 = 0, t1 = n - 1;
+    while (t0 < t1) {
+      i64 tm = (t0 + t1) / 2;
+      if (upper(p, r.at(tm), r.at(tm + 1)))
+        t0 = tm + 1;
+      else
+        t1 = tm;
+    }
+    r.split = t0;
+    return r;
+  }
+  i64 m = 0;
+  for (i64 i = lo; i < hi; ++i) {
+    if (m == 0 || p[2 * i] != p[2 * keep[m - 1]] || p[2 * i + 1] != p[2 * keep[m - 1] + 1])
+      keep[m++] = i;
+  }
+  while (m > 1 && p[2 * keep[m - 1]] == p[2 * keep[0]] &&
+         p[2 * keep[m - 1] + 1] == p[2 * keep[0] + 1])
+    --m;
+  if (m == 1) {
+    out[0] = keep[0];
+    r.k = 1;
+    r.split = 1;
+    return r;
+  }
+  i64 b = 0;
+  for (i64 t = 1; t < m; ++t) {
+    i64 i = keep[t], j = keep[b];
+    if (p[2 * i + 1] < p[2 * j + 1] || (p[2 * i + 1] == p[2 * j + 1] && p[2 * i] < p[2 * j]))
+      b = t;
+  }
+  int sg = 0;
+  for (i64 t = 0; t < m; ++t) {
+    i64 prv = keep[(b + t - 1 + m) % m], cur = keep[(b + t) % m], nxt = keep[(b + t + 1) % m];
+    int o = orient(p, prv, cur, nxt);
+    turn[t] = (std::int8_t)o;
+    if (o != 0) {
+      if (sg == 0)
+        sg = o;
+      else if (o != sg) {
+        r.code = TURNS_BOTH_WAYS;
+        r.vertex = cur - lo;
+        return r;
+      }
+    }
+  }
+  if (sg == 0) {  // all collinear: the segment between the extreme points
+    i64 top = keep[0];
+    for (i64 t = 1; t < m; ++t) {
+      i64 i = keep[t];
+      if (p[2 * i + 1] > p[2 * top + 1] || (p[2 * i + 1] == p[2 * top + 1] && p[2 * i] > p[2 * top]))
+        top = i;
+    }
+    out[0] = keep[b];
+    out[1] = top;
+    r.k = 2;
+    r.split = 1;
+    return r;
+  }
+  i64 k = 0;
+  for (i64 t = 0; t < m; ++t) {
+    i64 tt = sg > 0 ? t : (m - t) % m;
+    i64 cur = keep[(b + tt) % m];
+    if (turn[tt] == 0) {
+      i64 prv = keep[(b + tt - 1 + m) % m], nxt = keep[(b + tt + 1) % m];
+      // parallel: straight on when both coordinate differences keep their signs
+      if (sgn(p[2 * cur] - p[2 * prv]) != sgn(p[2 * nxt] - p[2 * cur]) ||
+          sgn(p[2 * cur + 1] - p[2 * prv + 1]) != sgn(p[2 * nxt + 1] - p[2 * cur + 1])) {
+        r.code = SPIKE;
+        r.vertex = cur - lo;
+        return r;
+      }
+      continue;
+    }
+    out[k++] = cur;
+  }
+  // the edge directions must sweep exactly one turn: halves 0...0 1...1 from the bottom
+  i64 split = k;
+  for (i64 t = 0; t < k; ++t) {
+    bool up = upper(p, out[t], out[(t + 1) % k]);
+    if (split == k) {
+      if (!up) split = t;
+    } else if (up) {
+      r.code = WINDS_TWICE;
+      r.vertex = out[t] - lo;
+      return r;
+    }
+  }
+  r.k = k;
+  r.split = split;
+  return r;
+}
+
+// Called once per merge step when recording (the animation's trace): source -1 = A,
+// +1 = B, 0 = both; i, j the edge indices compared (-1 once a list is exhausted); c the
+// cross-product sign that decided, or 2 when the half-planes or exhaustion decided.
+struct Step {
+  std::int8_t source;
+  i64 i, j;
+  std::int8_t cross;
+};
+
+// Merge the edges of two normalized polygons by angle; write the sum's vertices to out
+// (row-major, room for A.k + B.k rows). Returns the count, or -1 if a float coordinate
+// of the sum overflowed. With `rec`, one Step per merge step is appended.
+template <class T>
+inline i64 merge(const T* pa, const Norm& A, const T* pb, const Norm& B, T* out,
+                 std::vector<Step>* rec = nullptr) {
+  const i64 na = A.k, nb = B.k;
+  const i64 ea = na > 1 ? na : 0, eb = nb > 1 ? nb : 0;
+  const i64 sa = A.split < ea ? A.split : ea, sb = B.split < eb ? B.split : eb;
+  i64 i = 0, j = 0, k = 0;
+  i64 ai = A.at(0), a1 = na > 1 ? A.at(1) : ai;
+  i64 bj = B.at(0), b1 = nb > 1 ? B.at(1) : bj;
+  while (true) {
+    T x = pa[2 * ai] + pb[2 * bj], y = pa[2 * ai + 1] + pb[2 * bj + 1];
+    out[2 * k] = x;
+    out[2 * k + 1] = y;
+    if constexpr (std::is_floating_point_v<T>) {
+      if (x - x != 0 || y - y != 0) return -1;
+    }
+    ++k;
+    if (i >= ea && j >= eb) break;
+    int step;
+    std::int8_t c = 2;
+    if (i < ea && j < eb) {
+      bool ha = i >= sa, hb = j >= sb;
+      if (ha != hb) {
+        step = ha ? 1 : -1;
+      } else {
+        T ux = pa[2 * a1] - pa[2 * ai], uy = pa[2 * a1 + 1] - pa[2 * ai + 1];
+        T vx = pb[2 * b1] - pb[2 * bj], vy = pb[2 * b1 + 1] - pb[2 * bj + 1];
+        int d;
+        if constexpr (std::is_floating_point_v<T>) {
+          double l = ux * vy, r = uy * vx, det = l - r;
+          double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
+          if (det > bnd && bnd >= MINBOUND)
+            d = 1;
+          else if (-det > bnd && bnd >= MINBOUND)
+            d = -1;
+          else
+            d = cross_sign(pa[2 * ai], pa[2 * ai + 1], pa[2 * a1], pa[2 * a1 + 1], pb[2 * bj],
+                           pb[2 * bj + 1], pb[2 * b1], pb[2 * b1 + 1]);
+        } else {
+          i128 l = (i128)ux * vy, r = (i128)uy * vx;
+          d = (l > r) - (l < r);
+        }
+        c = (std::int8_t)d;
+        step = -d;
+      }
+    } else if (i < ea) {
+      step = -1;
+    } else {
+      step = 1;
+    }
+    if (rec) rec->push_back(Step{(std::int8_t)step, i < ea ? i : -1, j < eb ? j : -1, c});
+    if (step <= 0) {
+      ++i;
+      ai = a1;
+      if (i + 1 <= na) a1 = A.at(i + 1);
+    }
+    if (step >= 0) {
+      ++j;
+      bj = b1;
+      if (j + 1 <= nb) b1 = B.at(j + 1);
+    }
+    if (i >= ea && j >= eb) break;
+  }
+  return k;
+}
+
+// Andrew's monotone chain over p[order] (sorted by x, then y); writes hull indices CCW
+// from the lowest-x point into h (size 2n + 1); returns their count. Collinear dropped.
+template <class T>
+inline i64 hull_sorted(const T* p, const i64* order, i64 n, i64* h) {
+  i64 k = 0;
+  for (i64 t = 0; t < n; ++t) {
+    i64 i = order[t];
+    while (k >= 2 && orient(p, h[k - 2], h[k - 1], i) <= 0) --k;
+    h[k++] = i;
+  }
+  i64 lower = k + 1;
+  for (i64 t = n - 2; t >= 0; --t) {
+    i64 i = order[t];
+    while (k >= lower && orient(p, h[k - 2], h[k - 1], i) <= 0) --k;
+    h[k++] = i;
+  }
+  return k > 0 ? k - 1 : 0;
+}
+
+}  // namespace mk

@@ -1,0 +1,266 @@
+// exact.hpp -- the one home of minkowski2d's exact predicates.
+//
+// Every combinatorial decision of the library is the sign of a 2x2 determinant
+// (a1 - a0) x (b1 - b0). Two coordinate types reach it:
+//
+//  * int64_t, with |x| < 2^62 (the dispatcher routes larger ints to Python's exact path):
+//    differences fit in int64 and their products in __int128, so the sign is exact.
+//  * double, any finite value from subnormals to DBL_MAX: Shewchuk's filter decides when
+//    |l - r| > (3 eps + 16 eps^2)(|l| + |r|) and no product underflowed or overflowed (an
+//    inf or NaN anywhere means "undecided", never "zero"); otherwise the exact sign comes
+//    from a fixed-point (Kulisch) accumulator that holds the 8 exact products
+//    a_i * b_j of the expanded determinant at every magnitude -- no range limit, no rescale.
+//
+// The expansion arithmetic below (two_sum, two_prod, grow) is used where an exact *value*
+// is needed (collision witnesses); it is exact while every nonzero |coordinate| lies in
+// [2^-400, 2^400] (see in_expansion_range). This file must be compiled without
+// -ffast-math and with -ffp-contract=off: a fused multiply-add breaks the error-free
+// transformations (tests/test_core.py checks the built module).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace mk {
+
+using i64 = std::int64_t;
+using u64 = std::uint64_t;
+using i128 = __int128;
+using u128 = unsigned __int128;
+
+// Status codes shared with Python (minkowski2d._dispatch.Status mirrors these by name).
+enum Status : int {
+  OK = 0,
+  TURNS_BOTH_WAYS = 1,  // a convex routine got a polygon that turns both ways
+  SPIKE = 2,            // the boundary doubles back on itself
+  WINDS_TWICE = 3,      // the edge directions wind around more than once
+  OVERFLOW = 4,         // a float result coordinate is not finite
+  NONFINITE = 5,        // an input coordinate is NaN or infinite
+  RANGE = 6,            // values this path cannot take exactly: the caller goes exact-Python
+  UNHANDLED = 7,        // input of a kind this fast path does not read (list path)
+  SHAPE = 8,            // not an (n, 2) sequence of pairs
+  EMPTY = 9,            // no vertices
+};
+
+constexpr double EPS = 1.1102230246251565e-16;                 // 2^-53
+constexpr double ERRBOUND = (3.0 + 16.0 * EPS) * EPS;          // Shewchuk's ccwerrboundA
+// The filter's bound is relative; its proof assumes no product underflows. Below this
+// bound value (|l| + |r| < 2^-960) the exact evaluation decides.
+constexpr double MINBOUND = ERRBOUND * 0x1p-960;
+// int64 coordinates must satisfy |x| < INT_LIMIT for the __int128 cross products.
+constexpr i64 INT_LIMIT = (i64)1 << 62;
+constexpr double SPLITTER = 134217729.0;  // 2^27 + 1
+constexpr double X_HI = 0x1p400;          // expansion range (values only, not signs)
+constexpr double X_LO = 0x1p-400;
+
+template <class T>
+inline int sgn(T v) {
+  return (v > 0) - (v < 0);
+}
+
+// ------------------------------------------------------------------------------------
+// Kulisch accumulator: exact sums of products of doubles at every magnitude.
+
+namespace detail {
+
+struct Unpacked {
+  u64 m;     // integer mantissa, < 2^53
+  int e;     // exponent: |x| = m * 2^e
+  bool neg;
+};
+
+inline Unpacked unpack(double x) {
+  u64 bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  Unpacked u;
+  u.neg = (bits >> 63) != 0;
+  int ex = (int)((bits >> 52) & 0x7ff);
+  u64 frac = bits & ((u64(1) << 52) - 1);
+  if (ex == 0) {
+    u.m = frac;
+    u.e = -1074;
+  } else {
+    u.m = frac | (u64(1) << 52);
+    u.e = ex - 1075;
+  }
+  return u;
+}
+
+// Products of two finite doubles are m * 2^e with e in [-2148, 1942] and m < 2^106.
+constexpr int ACC_EMIN = -2148;
+constexpr int ACC_WORDS = 68;  // 4352 bits: 2148 + 1942 + 106 + carry room
+
+struct Acc {
+  u64 w[ACC_WORDS];
+  int lo = ACC_WORDS, hi = -1;  // touched word range
+  Acc() { std::memset(w, 0, sizeof w); }
+  void add(u128 v, int e) {
+    if (v == 0) return;
+    int pos = e - ACC_EMIN;
+    int word = pos >> 6, sh = pos & 63;
+    u128 low = v << sh;  // low 128 bits of v * 2^sh
+    u64 top = sh ? (u64)(v >> (128 - sh)) : 0;
+    u64 parts[3] = {(u64)low, (u64)(low >> 64), top};
+    u64 carry = 0;
+    int k = word;
+    for (int t = 0; t < 3; ++t, ++k) {
+      u128 s = (u128)w[k] + parts[t] + carry;
+      w[k] = (u64)s;
+      carry = (u64)(s >> 64);
+    }
+    while (carry) {
+      u128 s = (u128)w[k] + carry;
+      w[k] = (u64)s;
+      carry = (u64)(s >> 64);
+      ++k;
+    }
+    if (word < lo) lo = word;
+    if (k - 1 > hi) hi = k - 1;
+  }
+};
+
+// sign(P - N) for two accumulators
+inline int compare(const Acc& P, const Acc& N) {
+  int top = P.hi > N.hi ? P.hi : N.hi;
+  int bot = P.lo < N.lo ? P.lo : N.lo;
+  for (int k = top; k >= bot && k >= 0; --k) {
+    if (P.w[k] != N.w[k]) return P.w[k] > N.w[k] ? 1 : -1;
+  }
+  return 0;
+}
+
+inline void add_product(Acc& P, Acc& N, double x, double y, bool negate) {
+  if (x == 0.0 || y == 0.0) return;
+  Unpacked a = unpack(x), b = unpack(y);
+  u128 m = (u128)a.m * b.m;
+  bool neg = (a.neg != b.neg) != negate;
+  (neg ? N : P).add(m, a.e + b.e);
+}
+
+}  // namespace detail
+
+// Exact sign of (a1 - a0) x (b1 - b0) for finite doubles, at any magnitude.
+inline int cross_sign_exact(double a0x, double a0y, double a1x, double a1y, double b0x,
+                            double b0y, double b1x, double b1y) {
+  using detail::add_product;
+  detail::Acc P, N;
+  // (a1x - a0x)(b1y - b0y) - (a1y - a0y)(b1x - b0x), expanded into 8 exact products
+  add_product(P, N, a1x, b1y, false);
+  add_product(P, N, a1x, b0y, true);
+  add_product(P, N, a0x, b1y, true);
+  add_product(P, N, a0x, b0y, false);
+  add_product(P, N, a1y, b1x, true);
+  add_product(P, N, a1y, b0x, false);
+  add_product(P, N, a0y, b1x, false);
+  add_product(P, N, a0y, b0x, true);
+  return detail::compare(P, N);
+}
+
+// Filtered sign of (a1 - a0) x (b1 - b0) for finite doubles.
+inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x, double b0y,
+                      double b1x, double b1y) {
+  double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
+  // A zero difference is exact (x - y == 0 only when x == y) and so is the sign of any
+  // difference (also when it overflows to +-inf); a product with a zero factor is zero.
+  if (ux == 0.0 || vy == 0.0) return -(sgn(uy) * sgn(vx));
+  if (uy == 0.0 || vx == 0.0) return sgn(ux) * sgn(vy);
+  double l = ux * vy, r = uy * vx, det = l - r;
+  double bound = ERRBOUND * (std::fabs(l) + std::fabs(r));
+  if (bound >= MINBOUND) {  // false for NaN; inf bounds never certify below
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
+}
+
+// Exact sign of (a1 - a0) x (b1 - b0) for int64 coordinates with |x| < 2^62.
+inline int cross_sign(i64 a0x, i64 a0y, i64 a1x, i64 a1y, i64 b0x, i64 b0y, i64 b1x,
+                      i64 b1y) {
+  i128 l = (i128)(a1x - a0x) * (i128)(b1y - b0y);
+  i128 r = (i128)(a1y - a0y) * (i128)(b1x - b0x);
+  return (l > r) - (l < r);
+}
+
+// ------------------------------------------------------------------------------------
+// Error-free transformations and expansions (exact within [X_LO, X_HI], see above).
+
+inline void two_sum(double a, double b, double& x, double& y) {
+  x = a + b;
+  double bv = x - a, av = x - bv;
+  y = (a - av) + (b - bv);
+}
+
+inline void two_diff(double a, double b, double& x, double& y) {
+  x = a - b;
+  double bv = a - x, av = x + bv;
+  y = (a - av) + (bv - b);
+}
+
+inline void two_prod(double a, double b, double& x, double& y) {
+  x = a * b;
+  double c = SPLITTER * a;
+  double ahi = c - (c - a), alo = a - ahi;
+  c = SPLITTER * b;
+  double bhi = c - (c - b), blo = b - bhi;
+  double err = ((x - ahi * bhi) - alo * bhi) - ahi * blo;
+  y = alo * blo - err;
+}
+
+// Add b to the nonoverlapping expansion e[0:m] in place (zero-eliminating); new length.
+inline int grow(double* e, int m, double b) {
+  double q = b, hh;
+  int h = 0;
+  for (int k = 0; k < m; ++k) {
+    two_sum(q, e[k], q, hh);
+    if (hh != 0.0) e[h++] = hh;
+  }
+  if (q != 0.0 || h == 0) e[h++] = q;
+  return h;
+}
+
+// (a1 - a0) x (b1 - b0) exactly into e (size >= 40), smallest component first.
+inline int cross_expansion(double* e, double a0x, double a0y, double a1x, double a1y,
+                           double b0x, double b0y, double b1x, double b1y) {
+  double uxh, uxl, uyh, uyl, vxh, vxl, vyh, vyl, x, y;
+  two_diff(a1x, a0x, uxh, uxl);
+  two_diff(a1y, a0y, uyh, uyl);
+  two_diff(b1x, b0x, vxh, vxl);
+  two_diff(b1y, b0y, vyh, vyl);
+  int m = 0;
+  const double P[4][2] = {{uxh, vyh}, {uxh, vyl}, {uxl, vyh}, {uxl, vyl}};
+  for (auto& pq : P) {
+    two_prod(pq[0], pq[1], x, y);
+    m = grow(e, m, y);
+    m = grow(e, m, x);
+  }
+  const double Q[4][2] = {{uyh, vxh}, {uyh, vxl}, {uyl, vxh}, {uyl, vxl}};
+  for (auto& pq : Q) {
+    two_prod(pq[0], pq[1], x, y);
+    m = grow(e, m, -y);
+    m = grow(e, m, -x);
+  }
+  return m;
+}
+
+inline bool in_expansion_range(double x) {
+  double a = std::fabs(x);
+  return a == 0.0 || (a >= X_LO && a <= X_HI);
+}
+
+// Exact sign check used by the self-test: does the expansion machinery survive this build?
+inline bool fp_contract_off_selftest() {
+  // two_prod is exact only without FMA contraction; check on a value where it matters.
+  volatile double a = 134217729.0 + 0.5, b = 134217727.0 - 0.25;  // 2^27 + ...
+  double x, y;
+  two_prod(a, b, x, y);
+  // exact product via Kulisch
+  detail::Acc P, N;
+  detail::add_product(P, N, a, b, false);
+  detail::add_product(P, N, x, 1.0, true);
+  detail::add_product(P, N, y, 1.0, true);
+  return detail::compare(P, N) == 0;
+}
+
+}  // namespace mk
