@@ -90,7 +90,7 @@ def random_hull(rng: np.random.Generator, k: int) -> np.ndarray:
 
 # -- timing ------------------------------------------------------------------------------
 def median_time(f: Callable[[], Any], repeat: int, number: int = 1) -> float:
-    f()  # warm up (numba cache load, allocations)
+    f()  # warm up (allocations, caches)
     ts = []
     for _ in range(repeat):
         t0 = time.perf_counter()
@@ -184,9 +184,11 @@ def bench_batch(P: int, repeat: int) -> list[str]:
     RA = mk.Ragged.from_list(As)
     RB = mk.Ragged.from_list(Bs)
     ours = median_time(lambda: mk.minkowski_sum_many(RA, RB), repeat)
+    ours_t2 = median_time(lambda: mk.minkowski_sum_many(RA, RB, threads=2), repeat)
     ours_list = median_time(lambda: mk.minkowski_sum_many(As, Bs), repeat)
     la = [[tuple(p) for p in a.tolist()] for a in As]
     lb = [[tuple(p) for p in b.tolist()] for b in Bs]
+    ours_tuples = median_time(lambda: mk.minkowski_sum_many(la, lb), repeat)
     seed = median_time(lambda: [seed_minkowski(x, y) for x, y in zip(la, lb)], max(1, repeat // 3))
     loop = median_time(
         lambda: [mk.minkowski_sum(x, y) for x, y in zip(la, lb)], max(1, repeat // 3)
@@ -199,6 +201,8 @@ def bench_batch(P: int, repeat: int) -> list[str]:
 
     shp_t = median_time(shp, max(1, repeat // 3))
     peers = [
+        ("minkowski_sum_many from a Ragged, threads=2", ours_t2, ""),
+        ("minkowski_sum_many on lists of tuples", ours_tuples, "includes packing to Ragged"),
         ("minkowski_sum_many on lists of arrays", ours_list, "includes packing to Ragged"),
         ("Python loop of minkowski_sum", loop, ""),
         ("Python loop of the seed's merge", seed, ""),

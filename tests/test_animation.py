@@ -132,8 +132,9 @@ def test_errors_name_the_polygon_as_the_page_does():
 def test_parse_points():
     assert parse_points("0 0\n2 0\n0 2", "A") == [(0, 0), (2, 0), (0, 2)]
     assert parse_points("(0.5, -1e3); (1/4, 2)", "A") == [(0.5, -1000.0), (Fraction(1, 4), 2)]
-    assert parse_points('{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1], [0, 0]]]}',
-                        "A") == [(0, 0), (1, 0), (0, 1), (0, 0)]
+    assert parse_points(
+        '{"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 1], [0, 0]]]}', "A"
+    ) == [(0, 0), (1, 0), (0, 1), (0, 0)]
     nan = parse_points("nan, 1", "A")[0][0]
     assert nan != nan
     with pytest.raises(ShapeError, match="do not make"):

@@ -32,8 +32,10 @@ ARGS = [
 ARTIFACTS = Path(__file__).resolve().parent.parent / "test-artifacts"
 
 if not os.path.exists(CHROMIUM):
-    pytest.skip(f"browser tests need Chromium at {CHROMIUM} (Debian package chromium)",
-                allow_module_level=True)
+    pytest.skip(
+        f"browser tests need Chromium at {CHROMIUM} (Debian package chromium)",
+        allow_module_level=True,
+    )
 sync_api = pytest.importorskip(
     "playwright.sync_api", reason="browser tests need the playwright pip package"
 )

@@ -12,7 +12,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
-from minkowski2d import convex
+from minkowski2d import _dispatch as D
 from minkowski2d.errors import (
     CoordinateTypeError,
     EmptyGeometryError,
@@ -30,19 +30,24 @@ SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[Heal
 
 @contextmanager
 def kernels_forced():
-    """Every array input goes through the compiled kernels while inside (for hypothesis
-    tests, which cannot take function-scoped fixtures)."""
-    convex.TINY, old = 0, convex.TINY
+    """Arrays always take the compiled core now (no size threshold); kept so the tests
+    below read as before."""
+    yield
+
+
+@contextmanager
+def exact_forced():
+    """Everything goes through the exact Python path (ints and Fractions) while inside."""
+    D.FORCE_EXACT, old = True, D.FORCE_EXACT
     try:
         yield
     finally:
-        convex.TINY = old
+        D.FORCE_EXACT = old
 
 
 @pytest.fixture
-def kernel_path(monkeypatch):
-    """Force every array input through the compiled kernels (no pure-Python tiny path)."""
-    monkeypatch.setattr(convex, "TINY", 0)
+def kernel_path():
+    """Arrays take the compiled core (the default)."""
 
 
 def exact_rows(arr):
@@ -123,10 +128,11 @@ def test_near_degenerate_floats_every_path(seed, monkeypatch):
     rng = np.random.default_rng(seed)
     a = [(float(x), float(y)) for x, y in _near_collinear_polygon(rng, 30, 0.1, 1.0)]
     b = [(float(x), float(y)) for x, y in _near_collinear_polygon(rng, 30, 0.1 + 1e-16, 3.0)]
-    expected = mk.minkowski_sum(a, b)  # list path (Python Fractions fallback)
+    expected = mk.minkowski_sum(a, b)  # the core from lists
     assert_matches_oracle(expected, a, b)
-    monkeypatch.setattr(convex, "TINY", 0)
-    got = mk.minkowski_sum(np.array(a), np.array(b))  # kernels (expansion arithmetic)
+    got = mk.minkowski_sum(np.array(a), np.array(b))  # the core from arrays
+    with exact_forced():
+        assert mk.minkowski_sum(a, b).tolist() == expected.tolist()
     assert got.tolist() == expected.tolist()
     many = mk.minkowski_sum_many([np.array(a)], [np.array(b)])
     assert many[0].tolist() == expected.tolist()
@@ -183,9 +189,8 @@ def test_fractions_stay_exact():
     assert exact_rows(s) == oracle.minkowski_sum(a, b)
 
 
-def test_extreme_float_exponents_use_exact_path(monkeypatch):
-    monkeypatch.setattr(convex, "TINY", 0)
-    for scale in (1e-300, 1e300, 2.0**-1060):
+def test_extreme_float_exponents_are_exact():
+    for scale in (1e-300, 1e300, 2.0**-1060, 5e-324, 2.0**1000):
         a = np.array([(0.0, 0.0), (3.0, 0.0), (0.0, 2.0)]) * scale
         b = np.array([(0.0, 0.0), (1.0, 1.0), (-1.0, 1.0)]) * scale
         assert_matches_oracle(mk.minkowski_sum(a, b), a.tolist(), b.tolist())
@@ -246,8 +251,10 @@ def test_three_speeds_identical(a, b):
     with kernels_forced():
         kern = mk.minkowski_sum(np.array(a), np.array(b))
     many = mk.minkowski_sum_many([np.array(a)], [np.array(b)])
-    assert tiny.tolist() == kern.tolist() == many[0].tolist()
-    assert tiny.dtype == kern.dtype == many.coords.dtype
+    with exact_forced():
+        ex = mk.minkowski_sum(a, b)
+    assert tiny.tolist() == kern.tolist() == many[0].tolist() == ex.tolist()
+    assert tiny.dtype == kern.dtype == many.coords.dtype == ex.dtype
 
 
 def test_output_contract_on_a_large_float_pair():
@@ -325,7 +332,7 @@ def test_hull_option_takes_any_point_set():
 def test_convex_hull_matches_oracle(pts):
     expect = oracle.hull(pts)
     assert exact_rows(mk.convex_hull(pts)) == expect
-    assert exact_rows(mk.convex_hull(np.array(pts * 3))) == expect  # kernel path (n > TINY)
+    assert exact_rows(mk.convex_hull(np.array(pts * 3))) == expect  # the core
 
 
 # -- helpers -----------------------------------------------------------------------------

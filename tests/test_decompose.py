@@ -64,8 +64,10 @@ def test_convex_input_is_one_piece_and_star_is_core_plus_spikes():
 
 
 def test_collinear_and_errors():
-    check_cover(shapely.Polygon([(0, 0), (2, 0), (4, 0), (4, 4), (2, 4), (0, 4)]),
-                mk.convex_decomposition([(0, 0), (2, 0), (4, 0), (4, 4), (2, 4), (0, 4)]))
+    check_cover(
+        shapely.Polygon([(0, 0), (2, 0), (4, 0), (4, 4), (2, 4), (0, 4)]),
+        mk.convex_decomposition([(0, 0), (2, 0), (4, 0), (4, 4), (2, 4), (0, 4)]),
+    )
     with pytest.raises(SelfIntersectionError):
         mk.convex_decomposition([(0, 0), (2, 2), (2, 0), (0, 2)])
     with pytest.raises(ValueError, match="method"):

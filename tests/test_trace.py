@@ -111,16 +111,32 @@ def test_seed_triangle_square_step_by_step():
 
 def test_uses_the_algorithms_own_merge(monkeypatch):
     calls = []
-    real = trace_mod._py_merge
+    real = trace_mod._ext.merge_record_i
 
     def spy(*args, **kw):
-        calls.append(kw.get("record"))
-        return real(*args, **kw)
+        out = real(*args, **kw)
+        calls.append(out[1])
+        return out
 
-    monkeypatch.setattr(trace_mod, "_py_merge", spy)
+    monkeypatch.setattr(trace_mod._ext, "merge_record_i", spy)
     t = mk.merge_trace(TRIANGLE, SQUARE)
-    assert len(calls) == 1 and isinstance(calls[0], list)
-    assert [r[0] for r in calls[0]] == [s.source for s in t.steps]
+    assert len(calls) == 1
+    names = {-1: "A", 1: "B", 0: "AB"}
+    assert [names[r[0]] for r in calls[0].tolist()] == [s.source for s in t.steps]
+
+
+def test_exact_path_records_the_same_steps():
+    from minkowski2d import _dispatch as D
+
+    t = mk.merge_trace(TRIANGLE, SQUARE)
+    D.FORCE_EXACT = True
+    try:
+        e = mk.merge_trace(TRIANGLE, SQUARE)
+    finally:
+        D.FORCE_EXACT = False
+    assert [(s.source, s.i, s.j, s.cross, s.vertex) for s in t.steps] == [
+        (s.source, s.i, s.j, s.cross, s.vertex) for s in e.steps
+    ]
 
 
 def test_to_dict_is_plain_json():
@@ -171,8 +187,10 @@ def test_float_input_rounds_like_minkowski_sum():
 
 def test_large_arrays_match_the_compiled_path():
     k = np.arange(40)
-    circle = np.stack([np.round(1000 * np.cos(2 * np.pi * k / 40)),
-                       np.round(1000 * np.sin(2 * np.pi * k / 40))], axis=1).astype(np.int64)
+    circle = np.stack(
+        [np.round(1000 * np.cos(2 * np.pi * k / 40)), np.round(1000 * np.sin(2 * np.pi * k / 40))],
+        axis=1,
+    ).astype(np.int64)
     sq = np.array([(0, 0), (300, 0), (300, 300), (0, 300)] * 1, dtype=np.int64)
     _check(circle, sq)
     _check(circle.astype(np.float64) / 7, circle[::-1])

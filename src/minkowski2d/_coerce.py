@@ -29,8 +29,11 @@ from .errors import (
 )
 
 INT, FLOAT, EXACT = "int", "float", "exact"
-_RANK = {INT: 0, FLOAT: 1, EXACT: 2}
+#: floats next to ints beyond 2**53: exact decisions (Fractions), float output
+XFLOAT = "xfloat"
+_RANK = {INT: 0, FLOAT: 1, XFLOAT: 2, EXACT: 3}
 
+_F53 = 1 << 53
 INT64_MAX = (1 << 63) - 1
 INT64_MIN = -(1 << 63)
 
@@ -85,64 +88,83 @@ def _shapely_coords(obj: Any, name: str) -> np.ndarray | None:
 
 
 def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
-    """Validate a short sequence of pairs in pure Python.
+    """Validate a sequence of pairs in pure Python.
 
-    Returns the list of ``(x, y)`` tuples (ints converted to Python ints, floats to Python
-    floats) and the kind. Raises the specific :mod:`minkowski2d.errors` exception otherwise.
+    Returns the list of ``(x, y)`` tuples and the kind:
+
+    * ``"int"``: Python ints (numpy ints converted);
+    * ``"float"``: Python floats (ints next to them are at most 2**53, converted exactly);
+    * ``"xfloat"``: floats next to ints beyond 2**53: every value as an exact int or
+      Fraction (no rounding before deciding), the output is float;
+    * ``"exact"``: Fractions present: every value as an int or Fraction (a float next to
+      a Fraction is converted exactly, never the Fraction to float).
+
+    Raises the specific :mod:`minkowski2d.errors` exception otherwise.
     """
     out = []
-    kind = INT
-    nfloat = 0
+    kinds = set()
+    big_int = False
     append = out.append
     for k, p in enumerate(seq):
         try:
             x, y = p
         except (TypeError, ValueError):
             raise ShapeError(
-                f"{name}: vertex {k} is {p!r}, not an (x, y) pair; expected shape (n, 2)"
+                f"{name}: vertex {k} is {p!r}, not an (x, y) pair; expected shape (n, 2)",
+                argument=name,
+                vertex=k,
             ) from None
         tx = type(x)
-        if tx is type(y):
+        if tx is type(y) and (tx is int or tx is float):
+            if tx is float and ((x - x) or (y - y)):  # nan for inf and nan, 0.0 otherwise
+                raise NonFiniteError(
+                    f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})",
+                    argument=name,
+                    vertex=k,
+                )
             if tx is int:
-                append((x, y))
-                continue
-            if tx is float:
-                if (x - x) or (y - y):  # nan for inf and nan, 0.0 otherwise
-                    raise NonFiniteError(
-                        f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
-                    )
-                nfloat += 1
-                append((x, y))
-                continue
+                kinds.add(INT)
+                if not (-_F53 <= x <= _F53 and -_F53 <= y <= _F53):
+                    big_int = True
+            else:
+                kinds.add(FLOAT)
+            append((x, y))
+            continue
         kx = _kind_of_scalar(x, name, k)
         ky = _kind_of_scalar(y, name, k)
-        kk = kx if _RANK[kx] >= _RANK[ky] else ky
-        if kx == FLOAT or ky == FLOAT:
-            x = float(x)
-            y = float(y)
-            if (x - x) or (y - y):
-                raise NonFiniteError(
-                    f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})"
-                )
-            nfloat += 1
-            if kk != EXACT:
-                kk = INT  # counted in nfloat; the kind is settled below
-        elif kk == INT:
-            x = int(x)
-            y = int(y)
-        append((x, y))
-        if _RANK[kk] > _RANK[kind]:
-            kind = kk
-    if nfloat:
-        kind = EXACT if kind == EXACT else FLOAT
+        vals = []
+        for v, kv in ((x, kx), (y, ky)):
+            if kv == FLOAT:
+                v = float(v)
+                if v - v:
+                    raise NonFiniteError(
+                        f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})",
+                        argument=name,
+                        vertex=k,
+                    )
+            elif kv == INT:
+                v = int(v)
+                if not -_F53 <= v <= _F53:
+                    big_int = True
+            kinds.add(kv)
+            vals.append(v)
+        append((vals[0], vals[1]))
     if not out:
-        raise EmptyGeometryError(f"{name}: empty input (no vertices)")
-    if kind == EXACT:
-        # A float mixed with Fractions: the floats are exact dyadic rationals, so keep exact.
-        out = [(Fraction(x), Fraction(y)) for x, y in out]
-    elif kind == FLOAT and nfloat != len(out):
-        out = [(float(x), float(y)) for x, y in out]
-    return out, kind
+        raise EmptyGeometryError(f"{name}: empty input (no vertices)", argument=name)
+    if EXACT in kinds:
+        kind = EXACT
+    elif FLOAT in kinds:
+        kind = XFLOAT if (INT in kinds and big_int) else FLOAT
+    else:
+        return out, INT
+    if kind == FLOAT:
+        if INT in kinds:
+            out = [(float(x), float(y)) for x, y in out]
+        return out, FLOAT
+    F = Fraction
+    return [
+        (F(x) if type(x) is not int else x, F(y) if type(y) is not int else y) for x, y in out
+    ], kind
 
 
 def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray | list, str]:
@@ -156,14 +178,31 @@ def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray
     shp = _shapely_coords(obj, name)
     if shp is not None:
         obj = shp
+    elif type(obj) is list or type(obj) is tuple:
+        # read the Python values themselves: np.asarray would round ints beyond 2**53
+        # next to floats, and float() a Fraction next to a float
+        if len(obj) == 0:
+            raise EmptyGeometryError(f"{name}: empty input (no vertices)", argument=name)
+        pts, kind = py_points(obj, name)
+        if kind == FLOAT:
+            return np.array(pts, dtype=np.float64).reshape(-1, 2), FLOAT
+        if kind == INT and all(INT64_MIN <= v <= INT64_MAX for p in pts for v in p):
+            return np.array(pts, dtype=np.int64).reshape(-1, 2), INT
+        return pts, kind
     try:
         arr = np.asarray(obj)
     except (ValueError, TypeError) as exc:
-        raise ShapeError(f"{name}: cannot read as an (n, 2) array of coordinates ({exc})") from None
+        raise ShapeError(
+            f"{name}: cannot read as an (n, 2) array of coordinates ({exc})", argument=name
+        ) from None
     if arr.size == 0:
-        raise EmptyGeometryError(f"{name}: empty input (no vertices)")
+        raise EmptyGeometryError(f"{name}: empty input (no vertices)", argument=name)
     if arr.ndim != 2 or arr.shape[1] != 2:
-        raise ShapeError(f"{name}: expected shape (n, 2), got {arr.shape}")
+        raise ShapeError(
+            f"{name}: expected shape (n, 2), got {arr.shape}",
+            argument=name,
+            hint="give a sequence of (x, y) pairs",
+        )
     dk = arr.dtype.kind
     if dk == "f":
         a = arr.astype(np.float64, copy=False)
@@ -171,7 +210,10 @@ def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray
         if check_finite and not np.isfinite(a).all():
             bad = int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])
             raise NonFiniteError(
-                f"{name}: vertex {bad} has a non-finite coordinate ({a[bad, 0]!r}, {a[bad, 1]!r})"
+                f"{name}: vertex {bad} has a non-finite coordinate "
+                f"({float(a[bad, 0])!r}, {float(a[bad, 1])!r})",
+                argument=name,
+                vertex=bad,
             )
         return a, FLOAT
     if dk == "i":

@@ -13,11 +13,17 @@ from typing import Any
 
 import numpy as np
 
-from ._coerce import FLOAT, INT, as_array
+from . import _dispatch as D
+from . import _exact
+from ._coerce import as_array
+from ._core import _ext
 from ._types import ArrayLike2
 from .errors import EmptyGeometryError, NonFiniteError, ShapeError
 
 __all__ = ["Ragged", "minkowski_sum_many", "as_ragged_pair"]
+
+_OK = int(D.Status.OK)
+_NONFINITE = int(D.Status.NONFINITE)
 
 
 class Ragged:
@@ -56,6 +62,19 @@ class Ragged:
         """Build from a sequence of (n_k, 2) array-likes (or shapely geometries)."""
         if isinstance(polygons, Ragged):
             return polygons
+        if type(polygons) is list or type(polygons) is tuple:
+            # lists of (x, y) pairs of Python ints/floats: one pass in the core
+            coords, offsets, _, status, member, vertex = _ext.flatten(polygons)
+            if status == _OK and len(coords) == offsets[-1]:
+                if not (np.diff(offsets) == 0).any():
+                    return cls(coords, offsets)
+            elif status == _NONFINITE:
+                nm = f"{name}[{member}]"
+                raise NonFiniteError(
+                    f"{nm}: vertex {vertex} has a non-finite coordinate",
+                    argument=nm,
+                    vertex=int(vertex),
+                )
         arrs = []
         for k, p in enumerate(polygons):
             a = p if type(p) is np.ndarray and p.ndim == 2 and p.dtype.kind in "if" else None
@@ -232,7 +251,7 @@ def as_ragged_pair(
     return RA, a_lo, a_hi, RB, b_lo, b_hi, P, ("As" if many_a else "a", "Bs" if many_b else "b")
 
 
-def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
+def minkowski_sum_many(As: Any, Bs: Any, *, threads: int = 1) -> Ragged:
     """Minkowski sums of many pairs of convex polygons in one call.
 
     Parameters
@@ -241,6 +260,9 @@ def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
         polygon
         Pairwise (equal counts) or one-against-many (one side a single polygon, which is
         broadcast).
+    threads : int, default 1
+        Worker threads for the compiled kernel (the GIL is released); results are
+        identical for every value.
 
     Returns
     -------
@@ -254,6 +276,8 @@ def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
         Naming the polygon (``As[k]``) and its vertex.
     ShapeError, EmptyGeometryError, NonFiniteError
         Bad input, or unequal counts.
+    OverflowGeometryError
+        A float result coordinate would be infinite.
 
     Examples
     --------
@@ -265,32 +289,49 @@ def minkowski_sum_many(As: Any, Bs: Any) -> Ragged:
     >>> r[1].tolist()
     [[3, 3], [5, 3], [3, 5]]
     """
-    from .convex import _fits_kernel, _kernels, _raise_kernel_error, minkowski_sum
-
+    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+        raise ValueError(f"threads must be a positive int, got {threads!r}")
     RA, a_lo, a_hi, RB, b_lo, b_hi, P, names = as_ragged_pair(As, Bs)
     ca, cb = RA.coords, RB.coords
-    kind = FLOAT if "f" in (ca.dtype.kind, cb.dtype.kind) else INT
-    if kind == FLOAT:
-        ca = ca.astype(np.float64, copy=False)
-        cb = cb.astype(np.float64, copy=False)
-    fits = _fits_kernel(ca, kind, names[0]) & _fits_kernel(cb, kind, names[1])
-    if not fits:
-        # exact Python path, pair by pair (only for coordinates the kernels cannot take)
-        res = [minkowski_sum(ca[a_lo[q] : a_hi[q]], cb[b_lo[q] : b_hi[q]]) for q in range(P)]
-        return (
-            Ragged.from_list(res)
-            if res
-            else Ragged(np.empty((0, 2), ca.dtype), np.zeros(1, np.int64))
-        )
-    pa = np.ascontiguousarray(ca, dtype=np.float64)
-    pb = pa if cb is ca else np.ascontiguousarray(cb, dtype=np.float64)
-    total = int(np.maximum((a_hi - a_lo) + (b_hi - b_lo), 1).sum())
-    out = np.empty((total, 2), ca.dtype)
-    out_off = np.empty(P + 1, np.int64)
-    code, q, which, v = _kernels().sum_batch(pa, ca, a_lo, a_hi, pb, cb, b_lo, b_hi, out, out_off)
+    ka = "i" if ca.dtype.kind in "iu" else "f"
+    kb = "i" if cb.dtype.kind in "iu" else "f"
+    if ka == kb == "i":
+        path = "i"  # the core's first pass checks the range (RANGE: the exact path)
+    else:
+        ints = [c for c, k in ((ca, ka), (cb, kb)) if k == "i"]
+        path = "f" if all(c.size == 0 or int(np.abs(c).max()) <= 1 << 53 for c in ints) else "py"
+    if path == "py":
+        return _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi)
+    dt = np.int64 if path == "i" else np.float64
+    pa = np.ascontiguousarray(ca, dtype=dt)
+    pb = pa if cb is ca else np.ascontiguousarray(cb, dtype=dt)
+    fn = _ext.sum_batch_i if path == "i" else _ext.sum_batch_f
+    a_lo = np.ascontiguousarray(a_lo, np.int64)
+    a_hi = np.ascontiguousarray(a_hi, np.int64)
+    b_lo = np.ascontiguousarray(b_lo, np.int64)
+    b_hi = np.ascontiguousarray(b_hi, np.int64)
+    cap = int(np.maximum((a_hi - a_lo) + (b_hi - b_lo), 1).sum())
+    out = np.empty((cap, 2), dt)
+    off = np.empty(P + 1, np.int64)
+    code, q, which, v = fn(pa, a_lo, a_hi, pb, b_lo, b_hi, out, off, threads)
     if code:
         nm = names[which] if which < 2 else "result"
         if which < 2 and nm in ("As", "Bs"):
             nm = f"{nm}[{q}]"
-        _raise_kernel_error(int(code), 0, int(v), (nm,))
-    return Ragged(out[: out_off[-1]], out_off)
+        if code in (D.Status.TURNS_BOTH_WAYS, D.Status.SPIKE, D.Status.WINDS_TWICE):
+            raise _exact.not_convex(nm, int(code), int(v))
+        if code == D.Status.RANGE:
+            return _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi)
+        raise D.status_error(code, v, nm)
+    total = int(off[-1])
+    return Ragged(out[:total] if 2 * total >= cap else out[:total].copy(), off)
+
+
+def _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi) -> Ragged:
+    """Pair by pair through minkowski_sum (ints beyond the core's range)."""
+    from .convex import minkowski_sum
+
+    res = [minkowski_sum(ca[a_lo[q] : a_hi[q]], cb[b_lo[q] : b_hi[q]]) for q in range(len(a_lo))]
+    if not res:
+        return Ragged(np.empty((0, 2), ca.dtype), np.zeros(1, np.int64))
+    return Ragged.from_list(res)

@@ -76,11 +76,11 @@ def _is_general(g: Any, name: str) -> bool:
     """True when ``g`` needs the general (non-convex / holes) sum; validates ``g``."""
     import numpy as np
 
-    from .convex import _check_convex
+    from ._dispatch import check_convex
 
     if not isinstance(g, np.ndarray):
         return True  # shapely Polygon with holes or MultiPolygon
-    return not _check_convex(g, name)
+    return not check_convex(g, name)
 
 
 def _cmd_demo(args: argparse.Namespace) -> int:

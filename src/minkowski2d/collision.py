@@ -648,6 +648,7 @@ def _py_collide(A: list, sa: int, B: list, sb: int, mode: int) -> tuple[bool, li
             return True, _py_edge_row(F[k][0], *feats[k], 0)
     if mode == _DISTANCE:
         return True, _py_common_point(A, B, F)
+
     # penetration: the nearest edge line, compared exactly (c^2 / |e|^2)
     def depth2(k: int) -> Fraction:
         e = _sub(feats[k][1], feats[k][0])

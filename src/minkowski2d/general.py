@@ -75,10 +75,10 @@ class _Operand:
             return None
         import shapely
 
-        from .convex import _check_convex
+        from ._dispatch import check_convex
 
         ring = shapely.get_coordinates(g.exterior)[:-1]
-        return ring if _check_convex(ring, self.name) else None
+        return ring if check_convex(ring, self.name) else None
 
 
 def _float_coords(obj: Any, name: str) -> np.ndarray:
@@ -135,8 +135,10 @@ def _operand(obj: Any, name: str) -> _Operand:
             f"{name}: the polygon has an unbounded outer boundary (CGAL N = 0); "
             "its Minkowski sum is unbounded too"
         )
-    elif isinstance(obj, (list, tuple)) and obj and (
-        type(obj[0]).__module__.startswith("shapely") or np.ndim(obj[0]) == 2
+    elif (
+        isinstance(obj, (list, tuple))
+        and obj
+        and (type(obj[0]).__module__.startswith("shapely") or np.ndim(obj[0]) == 2)
     ):
         # a collection of polygons: their union is the operand
         geoms = []
@@ -571,9 +573,11 @@ def _erode_convex(A: np.ndarray, B: np.ndarray) -> Any:
             return hu
         return cr(u[0], u[1], v[0], v[1]) > 0
 
-    Bedges = [
-        (Be[(j + 1) % m][0] - Be[j][0], Be[(j + 1) % m][1] - Be[j][1]) for j in range(m)
-    ] if m > 1 else []
+    Bedges = (
+        [(Be[(j + 1) % m][0] - Be[j][0], Be[(j + 1) % m][1] - Be[j][1]) for j in range(m)]
+        if m > 1
+        else []
+    )
     lines = []  # (point on line, direction): the half-plane is on the left
     j = 0
     for i in range(n):
@@ -787,5 +791,3 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     nb = shapely.affinity.scale(gb, -1.0, -1.0, origin=(0, 0))
     grown = minkowski_sum_general(comp, nb if B.flat is None else -B.flat)
     return _result(shapely.difference(ga, grown))
-
-

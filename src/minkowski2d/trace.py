@@ -1,8 +1,9 @@
 """The edge merge of :func:`minkowski2d.minkowski_sum`, step by step.
 
-:func:`merge_trace` runs the very merge that ``minkowski_sum`` runs on its pure-Python
-path (:func:`minkowski2d.convex._py_normalize` and :func:`minkowski2d.convex._py_merge`,
-with the merge's ``record`` hook switched on) and turns what it recorded into a list of
+:func:`merge_trace` runs the very merge that ``minkowski_sum`` runs: the compiled
+core's recording variant of its merge for int64 and float64 input
+(``_ext.merge_record_*``), or :mod:`minkowski2d._exact` with its ``record`` hook for
+exact numbers and turns what it recorded into a list of
 :class:`MergeStep`. Nothing here decides an angle order a second time: the step's source
 and the sign that decided it are the merge's own. The trace only adds explanations: the
 exact value of the cross product whose sign the merge used, the edge vectors, and the
@@ -27,8 +28,10 @@ from typing import Any
 
 import numpy as np
 
+from . import _dispatch as D
+from . import _exact
+from ._core import _ext
 from ._types import ArrayLike2, Polygon
-from .convex import _prepare, _py_hull, _py_merge, _py_normalize, _to_array, _unify
 
 __all__ = ["MergeStep", "MergeTrace", "merge_trace", "format_number", "format_point"]
 
@@ -244,7 +247,7 @@ class MergeTrace:
         }
 
 
-def _exact(v: Any) -> Any:
+def _exv(v: Any) -> Any:
     return Fraction(v) if isinstance(v, float) else v
 
 
@@ -254,10 +257,10 @@ def _cross_value(A: list, i: int, B: list, j: int) -> Any:
     a1 = A[(i + 1) % len(A)]
     b0 = B[j]
     b1 = B[(j + 1) % len(B)]
-    ux = _exact(a1[0]) - _exact(a0[0])
-    uy = _exact(a1[1]) - _exact(a0[1])
-    vx = _exact(b1[0]) - _exact(b0[0])
-    vy = _exact(b1[1]) - _exact(b0[1])
+    ux = _exv(a1[0]) - _exv(a0[0])
+    uy = _exv(a1[1]) - _exv(a0[1])
+    vx = _exv(b1[0]) - _exv(b0[0])
+    vy = _exv(b1[1]) - _exv(b0[1])
     return ux * vy - uy * vx
 
 
@@ -290,10 +293,7 @@ def _explain(
         return f"a{i} × b{j} = {v} > 0: b{j} is counter-clockwise of a{i}, so a{i} comes first"
     if c < 0:
         return f"a{i} × b{j} = {v} < 0: b{j} is clockwise of a{i}, so b{j} comes first"
-    return (
-        f"a{i} × b{j} = {v}: the edges are parallel (same direction), "
-        "so both are taken together"
-    )
+    return f"a{i} × b{j} = {v}: the edges are parallel (same direction), so both are taken together"
 
 
 def _log_line(s: MergeStep) -> str:
@@ -308,16 +308,41 @@ def _log_line(s: MergeStep) -> str:
     return f"{s.index}. take {names} ({how}) → {format_point(s.vertex)}"
 
 
-def _lists(a: ArrayLike2, b: ArrayLike2) -> tuple[list, list, str]:
-    """Coerce both operands exactly as ``minkowski_sum`` does, always to the list form."""
-    da, ka, la = _prepare(a, "a")
-    db, kb, lb = _prepare(b, "b")
-    if not la:
-        da = [tuple(r) for r in da.tolist()]
-    if not lb:
-        db = [tuple(r) for r in db.tolist()]
-    A, B, kind, _ = _unify(da, ka, True, db, kb, True)
-    return A, B, kind
+_SOURCE = {-1: "A", 1: "B", 0: "AB"}
+
+
+def _run(a: ArrayLike2, b: ArrayLike2, hull: bool) -> tuple[list, int, list, int, list, list, Any]:
+    """Normalize and merge exactly as ``minkowski_sum`` does, recording the steps.
+
+    Returns ``(qa, split_a, qb, split_b, out, record, result_array)`` with the vertices as
+    lists of Python tuples and ``record`` entries ``(source, i, j, cross)``.
+    """
+    A, B, out_kind, path = D.pair(a, b, ("a", "b"))
+    if path == "py":
+        if hull:
+            A = _exact.hull_list(A)
+            B = _exact.hull_list(B)
+        qa, _, sa = _exact.normalize_list(A, "a")
+        qb, _, sb = _exact.normalize_list(B, "b")
+        record: list = []
+        out = _exact.merge_lists(qa, sa, qb, sb, record=record)
+        return qa, sa, qb, sb, out, record, _exact.to_array(out, out_kind)
+    if hull:
+        hull_fn = _ext.hull_i if path == "i" else _ext.hull_f
+        A = np.ascontiguousarray(A[hull_fn(A)])
+        B = np.ascontiguousarray(B[hull_fn(B)])
+    fn = _ext.merge_record_i if path == "i" else _ext.merge_record_f
+    res, steps, ia, sa, ib, sb, code, which, v = fn(A, B)
+    if code:
+        raise D.status_error(code, v, ("a", "b", "result")[which], (A, B, None)[which])
+    qa = [tuple(r) for r in A[ia].tolist()]
+    qb = [tuple(r) for r in B[ib].tolist()]
+    out = [tuple(r) for r in res.tolist()]
+    record = [
+        (_SOURCE[src], None if i < 0 else i, None if j < 0 else j, None if c == 2 else c)
+        for src, i, j, c in steps.tolist()
+    ]
+    return qa, int(sa), qb, int(sb), out, record, res
 
 
 def merge_trace(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> MergeTrace:
@@ -347,7 +372,8 @@ def merge_trace(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> MergeTra
 
     Notes
     -----
-    O(n + m) steps, in pure Python: meant for teaching and for the animation, not for
+    O(n + m) steps, recorded by the compiled merge; the explanations are built in
+    Python: meant for teaching and for the animation, not for
     speed (use ``minkowski_sum`` for that).
 
     Examples
@@ -361,14 +387,8 @@ def merge_trace(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> MergeTra
     >>> t.result.tolist()
     [[0, 0], [3, 0], [3, 1], [1, 3], [0, 3]]
     """
-    A, B, kind = _lists(a, b)
-    if hull:
-        A = _py_hull(A, kind)
-        B = _py_hull(B, kind)
-    qa, _, sa = _py_normalize(A, kind, "a")
-    qb, _, sb = _py_normalize(B, kind, "b")
-    record: list = []
-    out = _py_merge(qa, sa, qb, sb, kind, record=record)
+    qa, sa, qb, sb, out, record, result = _run(a, b, hull)
+    kind = "int" if result.dtype.kind == "i" else "float" if result.dtype.kind == "f" else "exact"
     na, nb = len(qa), len(qb)
     steps = []
     n = len(record)
@@ -421,5 +441,5 @@ def merge_trace(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> MergeTra
         split_b=sb,
         start=out[0],
         steps=steps,
-        result=_to_array(out, kind),
+        result=result,
     )

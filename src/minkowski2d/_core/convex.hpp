@@ -54,18 +54,44 @@ inline bool finite_coord(T v) {
 
 // Start-independent test for the common case: every vertex distinct, every turn strictly
 // the same way (certain under the filter), one upper->lower transition. +1 CCW, -1 CW,
-// 0 unsure (the general pass decides), 2 a non-finite coordinate (vertex in *bad).
+// 0 unsure (the general pass decides), 2 a non-finite coordinate, 3 an int64 beyond the
+// core's range (vertex in *bad).
 template <class T>
 inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad) {
   i64 n = hi - lo;
   if constexpr (std::is_floating_point_v<T>) {
-    double acc = 0.0;
-    for (i64 i = lo; i < hi; ++i) acc += (p[2 * i] - p[2 * i]) + (p[2 * i + 1] - p[2 * i + 1]);
-    if (acc != 0.0 || acc - acc != 0.0) {
+    // non-finite <=> all exponent bits set; an integer max over the exponent fields
+    // vectorizes (a floating-point sum would be one long dependency chain)
+    constexpr u64 EXP = 0x7ff0000000000000ull;
+    u64 mx = 0;
+    const double* q = p + 2 * lo;
+    for (i64 t = 0; t < 2 * (hi - lo); ++t) {
+      u64 bits;
+      std::memcpy(&bits, q + t, sizeof bits);
+      bits &= EXP;
+      mx = bits > mx ? bits : mx;
+    }
+    if (mx == EXP) {
       for (i64 i = lo; i < hi; ++i)
         if (!(p[2 * i] - p[2 * i] == 0.0 && p[2 * i + 1] - p[2 * i + 1] == 0.0)) {
           *bad = i - lo;
           return 2;
+        }
+    }
+  }
+  if constexpr (!std::is_floating_point_v<T>) {
+    // the __int128 cross products need |x| < 2^62 (one fused pass; RANGE -> exact path)
+    u64 acc = 0;
+    for (i64 i = lo; i < hi; ++i) {
+      u64 x = (u64)p[2 * i] + (u64)(INT_LIMIT - 1), y = (u64)p[2 * i + 1] + (u64)(INT_LIMIT - 1);
+      acc |= (x | y);
+    }
+    if (acc >= (u64)(2 * (INT_LIMIT - 1) + 1)) {
+      for (i64 i = lo; i < hi; ++i)
+        if (p[2 * i] >= INT_LIMIT || p[2 * i] <= -INT_LIMIT || p[2 * i + 1] >= INT_LIMIT ||
+            p[2 * i + 1] <= -INT_LIMIT) {
+          *bad = i - lo;
+          return 3;
         }
     }
   }
@@ -108,8 +134,8 @@ inline Norm normalize(const T* p, i64 lo, i64 hi, i64* keep, std::int8_t* turn, 
   r.idx = out;
   i64 bad = 0;
   int s = fast_check(p, lo, hi, &bad);
-  if (s == 2) {
-    r.code = NONFINITE;
+  if (s == 2 || s == 3) {
+    r.code = s == 2 ? NONFINITE : RANGE;
     r.vertex = bad;
     return r;
   }

@@ -9,6 +9,7 @@
 #include <Python.h>
 
 #include <algorithm>
+#include <memory>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -46,22 +47,35 @@ T* alloc(std::size_t n) {
   return new T[n > 0 ? n : 1];
 }
 
-// ------------------------------------------------------------------ convex, one pair
+// Uninitialized scratch (std::vector would zero it: for 2^20 vertices that memset costs
+// more than the merge; untouched pages of a large new[] are never even faulted in).
+template <class T>
+struct Buf {
+  std::unique_ptr<T[]> p;
+  explicit Buf(i64 n) : p(new T[n > 0 ? n : 1]) {}
+  T* data() { return p.get(); }
+};
 
 template <class T>
-nb::tuple sum_arrays(In2<T> A, In2<T> B) {
+using Mut2 = nb::ndarray<T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+// ------------------------------------------------------------------ convex, one pair
+
+// Sum into `out` (numpy-allocated by the caller, (na + nb, 2)): (k, code, which, vertex).
+template <class T>
+nb::tuple sum_arrays(In2<T> A, In2<T> B, Mut2<T> O) {
   const T* pa = A.data();
   const T* pb = B.data();
+  T* out = O.data();
   i64 na = (i64)A.shape(0), nb_ = (i64)B.shape(0);
-  i64 big = std::max<i64>(std::max(na, nb_), 1);
-  T* out = alloc<T>(2 * (std::size_t)(na + nb_));
   i64 k = 0;
   int code = mk::OK, which = 0;
   i64 vertex = 0;
   {
     nb::gil_scoped_release nogil;
-    std::vector<i64> keep(big), ia(std::max<i64>(na, 1)), ib(std::max<i64>(nb_, 1));
-    std::vector<std::int8_t> turn(big);
+    i64 big = std::max(na, nb_);
+    Buf<i64> keep(big), ia(na), ib(nb_);
+    Buf<std::int8_t> turn(big);
     mk::Norm a = mk::normalize(pa, 0, na, keep.data(), turn.data(), ia.data());
     if (a.code) {
       code = a.code;
@@ -82,7 +96,7 @@ nb::tuple sum_arrays(In2<T> A, In2<T> B) {
       }
     }
   }
-  return nb::make_tuple(owned(out, (std::size_t)k, 2), code, which, vertex);
+  return nb::make_tuple(k, code, which, vertex);
 }
 
 // Normalize one polygon: (indices (k,), split, code, vertex).
@@ -94,8 +108,8 @@ nb::tuple normalize_array(In2<T> P) {
   mk::Norm r;
   {
     nb::gil_scoped_release nogil;
-    std::vector<i64> keep(std::max<i64>(n, 1));
-    std::vector<std::int8_t> turn(std::max<i64>(n, 1));
+    Buf<i64> keep(n);
+    Buf<std::int8_t> turn(n);
     r = mk::normalize(p, 0, n, keep.data(), turn.data(), idx);
     if (!r.code && r.step != 0)
       for (i64 t = 0; t < r.k; ++t) idx[t] = r.at(t);
@@ -189,35 +203,36 @@ nb::tuple merge_record(In2<T> A, In2<T> B) {
 
 // ------------------------------------------------------------------ batch
 
-// Pair q sums A[a_lo[q]:a_hi[q]] and B[b_lo[q]:b_hi[q]]. Returns (coords (K,2), offsets
-// (P+1,), code, pair, which, vertex); on failure the lowest failing pair is reported.
+// Pair q sums A[a_lo[q]:a_hi[q]] and B[b_lo[q]:b_hi[q]] into `out` (numpy-allocated by
+// the caller with sum(max(la + lb, 1)) rows); the sums are compacted to the front and
+// `off` (P + 1) receives their offsets. Returns (code, pair, which, vertex); on failure
+// the lowest failing pair is reported, whatever the number of threads.
 template <class T>
 nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b_lo,
-                    In1<i64> b_hi, int threads) {
+                    In1<i64> b_hi, Mut2<T> O, nb::ndarray<i64, nb::ndim<1>, nb::c_contig> OFF,
+                    int threads) {
   const T* pa = A.data();
   const T* pb = B.data();
   const i64* alo = a_lo.data();
   const i64* ahi = a_hi.data();
   const i64* blo = b_lo.data();
   const i64* bhi = b_hi.data();
+  T* buf = O.data();
+  i64* off = OFF.data();
   const i64 P = (i64)a_lo.shape(0);
-  i64* off = alloc<i64>((std::size_t)P + 1);
-  T* coords = nullptr;
   int code = mk::OK, which = 0;
-  i64 pair = 0, vertex = 0, total = 0;
+  i64 pair = 0, vertex = 0;
   {
     nb::gil_scoped_release nogil;
-    std::vector<i64> cap(P + 1);
-    cap[0] = 0;
     i64 big = 1;
-    for (i64 q = 0; q < P; ++q) {
-      i64 la = ahi[q] - alo[q], lb = bhi[q] - blo[q];
-      big = std::max(big, std::max(la, lb));
-      cap[q + 1] = cap[q] + std::max<i64>(la + lb, 1);
-    }
-    T* buf = alloc<T>(2 * (std::size_t)cap[P]);
-    std::vector<i64> cnt(P);
-    int nt = std::max(1, std::min<int>(threads, (int)std::max<i64>(1, P / 256)));
+    for (i64 q = 0; q < P; ++q)
+      big = std::max(big, std::max(ahi[q] - alo[q], bhi[q] - blo[q]));
+    // off[q] holds the capacity offset of pair q until the compaction below
+    off[0] = 0;
+    for (i64 q = 0; q < P; ++q)
+      off[q + 1] = off[q] + std::max<i64>((ahi[q] - alo[q]) + (bhi[q] - blo[q]), 1);
+    Buf<i64> cnt(P);
+    int nt = std::max(1, std::min<int>(threads, (int)std::max<i64>(1, P / 64)));
     struct Fail {
       i64 pair = -1;
       int code = 0, which = 0;
@@ -226,8 +241,8 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
     std::vector<Fail> fails(nt);
     auto work = [&](int t) {
       i64 q0 = P * t / nt, q1 = P * (t + 1) / nt;
-      std::vector<i64> keep(big), ia(big), ib(big);
-      std::vector<std::int8_t> turn(big);
+      Buf<i64> keep(big), ia(big), ib(big);
+      Buf<std::int8_t> turn(big);
       for (i64 q = q0; q < q1; ++q) {
         mk::Norm a = mk::normalize(pa, alo[q], ahi[q], keep.data(), turn.data(), ia.data());
         if (a.code) {
@@ -239,12 +254,12 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
           fails[t] = Fail{q, b.code, 1, b.vertex};
           return;
         }
-        i64 k = mk::merge(pa, a, pb, b, buf + 2 * cap[q]);
+        i64 k = mk::merge(pa, a, pb, b, buf + 2 * off[q]);
         if (k < 0) {
           fails[t] = Fail{q, mk::OVERFLOW, 2, 0};
           return;
         }
-        cnt[q] = k;
+        cnt.data()[q] = k;
       }
     };
     if (nt == 1) {
@@ -264,22 +279,18 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
         break;
       }
     if (code == mk::OK) {
-      off[0] = 0;
-      for (i64 q = 0; q < P; ++q) off[q + 1] = off[q] + cnt[q];
-      total = off[P];
-      coords = alloc<T>(2 * (std::size_t)total);
-      for (i64 q = 0; q < P; ++q)
-        std::memcpy(coords + 2 * off[q], buf + 2 * cap[q], sizeof(T) * 2 * cnt[q]);
+      // compact in place, front to back (each destination is at or before its source)
+      i64 o = 0;
+      for (i64 q = 0; q < P; ++q) {
+        i64 src = off[q], k = cnt.data()[q];
+        if (src != o) std::memmove(buf + 2 * o, buf + 2 * src, sizeof(T) * 2 * k);
+        off[q] = o;
+        o += k;
+      }
+      off[P] = o;
     }
-    delete[] buf;
   }
-  if (code != mk::OK) {
-    coords = alloc<T>(0);
-    total = 0;
-    std::fill(off, off + P + 1, 0);
-  }
-  return nb::make_tuple(owned(coords, (std::size_t)total, 2), owned(off, (std::size_t)P + 1, 0),
-                        code, pair, which, vertex);
+  return nb::make_tuple(code, pair, which, vertex);
 }
 
 // ------------------------------------------------------------------ Python sequences
@@ -487,8 +498,8 @@ NB_MODULE(_ext, m) {
   m.attr("ERRBOUND") = mk::ERRBOUND;
   m.attr("MINBOUND") = mk::MINBOUND;
 
-  m.def("sum_f", &sum_arrays<double>, "a"_a.noconvert(), "b"_a.noconvert());
-  m.def("sum_i", &sum_arrays<i64>, "a"_a.noconvert(), "b"_a.noconvert());
+  m.def("sum_f", &sum_arrays<double>, "a"_a.noconvert(), "b"_a.noconvert(), "out"_a.noconvert());
+  m.def("sum_i", &sum_arrays<i64>, "a"_a.noconvert(), "b"_a.noconvert(), "out"_a.noconvert());
   m.def("normalize_f", &normalize_array<double>, "p"_a.noconvert());
   m.def("normalize_i", &normalize_array<i64>, "p"_a.noconvert());
   m.def("hull_f", &hull_array<double>, "p"_a.noconvert());
@@ -497,10 +508,10 @@ NB_MODULE(_ext, m) {
   m.def("merge_record_i", &merge_record<i64>, "a"_a.noconvert(), "b"_a.noconvert());
   m.def("sum_batch_f", &sum_batch<double>, "a"_a.noconvert(), "a_lo"_a.noconvert(),
         "a_hi"_a.noconvert(), "b"_a.noconvert(), "b_lo"_a.noconvert(), "b_hi"_a.noconvert(),
-        "threads"_a);
+        "out"_a.noconvert(), "offsets"_a.noconvert(), "threads"_a);
   m.def("sum_batch_i", &sum_batch<i64>, "a"_a.noconvert(), "a_lo"_a.noconvert(),
         "a_hi"_a.noconvert(), "b"_a.noconvert(), "b_lo"_a.noconvert(), "b_hi"_a.noconvert(),
-        "threads"_a);
+        "out"_a.noconvert(), "offsets"_a.noconvert(), "threads"_a);
   m.def("sum_lists", &sum_lists);
   m.def("flatten", &flatten);
   m.def("orient_f", &orient_many<double>, "p"_a.noconvert(), "q"_a.noconvert(), "r"_a.noconvert());

@@ -114,7 +114,9 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("a", help=f"convex polygon A: {poly_help}")
     p.add_argument("b", help=f"convex polygon B: {poly_help}")
     p.add_argument(
-        "-o", "--output", default="animation.html",
+        "-o",
+        "--output",
+        default="animation.html",
         help="the page to write (default: animation.html; - for standard output)",
     )
     _add_common(p)

@@ -1,0 +1,245 @@
+"""The one router: what the caller gave -> (kind, data) -> the compiled core or the exact
+Python path; status codes -> exceptions.
+
+Paths
+-----
+* ``"i"``: the core's int64 kernels. Ints with ``|x| < 2**62`` (``_ext.INT_LIMIT``), so
+  every cross product of differences fits in ``__int128``.
+* ``"f"``: the core's float64 kernels. Any finite float, subnormal to 1.7e308: the filter
+  decides, an exact accumulator decides what the filter cannot. Ints with ``|x| <= 2**53``
+  next to floats are converted exactly.
+* ``"py"``: :mod:`minkowski2d._exact`, on Python ints and Fractions. Ints at or beyond
+  2**62, Fractions (also next to floats), and ints beyond 2**53 next to floats (then the
+  output is float, each coordinate correctly rounded from the exact sum).
+
+Output kinds: ``"int"`` (int64, or Python ints in an object array beyond int64),
+``"float"`` (float64), ``"exact"`` (Fractions in an object array).
+
+Examples
+--------
+>>> from minkowski2d._dispatch import pair
+>>> A, B, out_kind, path = pair([(0, 0), (1, 0)], [(0.5, 0.0)], ("a", "b"))
+>>> out_kind, path, A.dtype
+('float', 'f', dtype('float64'))
+>>> pair([(2**70, 0)], [(1, 1)], ("a", "b"))[2:]
+('int', 'py')
+"""
+
+from __future__ import annotations
+
+import enum
+from fractions import Fraction
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from . import _exact
+from ._coerce import EXACT, FLOAT, INT, XFLOAT, as_array, py_points
+from ._core import _ext
+from .errors import (
+    GeometryError,
+    NonFiniteError,
+    OverflowGeometryError,
+    ShapeError,
+)
+
+__all__ = ["Status", "Operand", "operand", "pair", "status_error", "raise_status", "core"]
+
+core = _ext
+
+INT_LIMIT = int(_ext.INT_LIMIT)
+_CORE_DTYPES = (np.dtype(np.int64), np.dtype(np.float64))
+
+#: Tests set this to send everything through the exact Python path, to check that it and
+#: the core give identical results ("every speed identical").
+FORCE_EXACT = False
+_F53 = 1 << 53
+
+
+class Status(enum.IntEnum):
+    """Status codes of the compiled core (defined once, in exact.hpp)."""
+
+    OK = _ext.OK
+    TURNS_BOTH_WAYS = _ext.TURNS_BOTH_WAYS
+    SPIKE = _ext.SPIKE
+    WINDS_TWICE = _ext.WINDS_TWICE
+    OVERFLOW = _ext.OVERFLOW
+    NONFINITE = _ext.NONFINITE
+    RANGE = _ext.RANGE
+    UNHANDLED = _ext.UNHANDLED
+    SHAPE = _ext.SHAPE
+    EMPTY = _ext.EMPTY
+
+
+class Operand(NamedTuple):
+    """One validated polygon: ``data`` is a C-contiguous (n, 2) int64/float64 ndarray
+    when ``path`` is ``"i"``/``"f"``, else a list of exact ``(x, y)`` tuples; ``kind`` is
+    the dtype policy's kind of the input (``int``, ``float``, ``xfloat``, ``exact``)."""
+
+    data: Any
+    kind: str
+    path: str
+
+
+def status_error(code: int, vertex: int, name: str, coords: Any = None) -> GeometryError:
+    """The exception for a core status code (vertex in the caller's numbering)."""
+    code = int(code)
+    vertex = int(vertex)
+    if code in (Status.TURNS_BOTH_WAYS, Status.SPIKE, Status.WINDS_TWICE):
+        return _exact.not_convex(name, code, vertex)
+    if code == Status.OVERFLOW:
+        return OverflowGeometryError(
+            "result overflows float64 (a coordinate is infinite)",
+            argument="result",
+            hint="scale the input down (the result is exact up to the final rounding)",
+        )
+    if code == Status.NONFINITE:
+        what = ""
+        if coords is not None:
+            try:
+                x, y = coords[vertex]
+                what = f" ({float(x)!r}, {float(y)!r})"
+            except Exception:  # noqa: BLE001 - the message is best effort
+                what = ""
+        return NonFiniteError(
+            f"{name}: vertex {vertex} has a non-finite coordinate{what}",
+            argument=name,
+            vertex=vertex,
+            hint="remove NaN and infinite values",
+        )
+    return ShapeError(f"{name}: cannot be read (status {code})", argument=name)
+
+
+def raise_status(code: int, vertex: int, name: str, coords: Any = None) -> None:
+    """Raise :func:`status_error` unless ``code`` is OK."""
+    if code:
+        raise status_error(code, vertex, name, coords)
+
+
+def _int_in_core(arr: np.ndarray) -> bool:
+    return arr.size == 0 or (int(arr.max()) < INT_LIMIT and int(arr.min()) > -INT_LIMIT)
+
+
+def operand(obj: Any, name: str, fused: bool = False) -> Operand:
+    """Validate one polygon and choose its path (see the module doc).
+
+    With ``fused`` the caller's core function checks the int64 range itself in its first
+    pass (returning ``Status.RANGE``), so a C-contiguous int64 array is passed on as is.
+    """
+    t = type(obj)
+    if t is list or t is tuple:
+        res = _ext.flatten([obj])
+        status = res[3]
+        if status == Status.OK:
+            arr = res[0]
+            return Operand(arr, FLOAT if res[2] else INT, "f" if res[2] else "i")
+        if status == Status.NONFINITE:
+            raise status_error(status, res[5], name, obj)
+        if len(obj) == 0:
+            pass  # as_array raises the specific error
+        else:
+            pts, kind = py_points(obj, name)
+            return _from_points(pts, kind)
+    if (
+        t is np.ndarray
+        and obj.ndim == 2
+        and obj.shape[1] == 2
+        and obj.shape[0] > 0
+        and obj.dtype in _CORE_DTYPES
+        and obj.flags.c_contiguous
+    ):
+        # the common case, checked in the core's first pass: finiteness (floats) and the
+        # int64 range (RANGE sends the caller to the exact path)
+        return Operand(
+            obj, INT if obj.dtype == np.int64 else FLOAT, "i" if obj.dtype == np.int64 else "f"
+        )
+    data, kind = as_array(obj, name, check_finite=True)
+    if isinstance(data, list):
+        return _from_points(data, kind)
+    if kind == INT:
+        if _int_in_core(data):
+            return Operand(np.ascontiguousarray(data, dtype=np.int64), INT, "i")
+        return Operand([tuple(r) for r in data.tolist()], INT, "py")
+    return Operand(np.ascontiguousarray(data, dtype=np.float64), FLOAT, "f")
+
+
+def _from_points(pts: list, kind: str) -> Operand:
+    if kind == FLOAT:
+        return Operand(np.array(pts, dtype=np.float64).reshape(-1, 2), FLOAT, "f")
+    if kind == INT and all(-INT_LIMIT < v < INT_LIMIT for p in pts for v in p):
+        return Operand(np.array(pts, dtype=np.int64).reshape(-1, 2), INT, "i")
+    return Operand(pts, kind, "py")
+
+
+def _out_kind(*kinds: str) -> str:
+    if EXACT in kinds:
+        return EXACT
+    if FLOAT in kinds or XFLOAT in kinds:
+        return "float"
+    return "int"
+
+
+def exact_list(op: Operand) -> list:
+    """The operand as a list of exact tuples (ints stay ints, floats become Fractions)."""
+    if op.path == "py":
+        data = op.data
+    else:
+        data = [tuple(r) for r in op.data.tolist()]
+    if op.kind in (FLOAT, XFLOAT, EXACT) or op.path == "f":
+        return [
+            (
+                Fraction(x) if isinstance(x, float) else x,
+                Fraction(y) if isinstance(y, float) else y,
+            )
+            for x, y in data
+        ]
+    return data
+
+
+def unify(A: Operand, B: Operand) -> tuple[Any, Any, str, str]:
+    """Two operands on one path: ``(data_a, data_b, out_kind, path)``."""
+    out_kind = _out_kind(A.kind, B.kind)
+    if FORCE_EXACT:
+        return exact_list(A), exact_list(B), out_kind, "py"
+    if A.path == B.path and A.path != "py":
+        return A.data, B.data, out_kind, A.path
+    if A.path != "py" and B.path != "py":
+        # one int64, one float64: exact conversion when the ints stay within 2**53
+        ia, fa = (A, B) if A.path == "i" else (B, A)
+        if ia.data.size == 0 or int(np.abs(ia.data).max()) <= _F53:
+            conv = ia.data.astype(np.float64)
+            da, db = (conv, fa.data) if A.path == "i" else (fa.data, conv)
+            return da, db, out_kind, "f"
+    return exact_list(A), exact_list(B), out_kind, "py"
+
+
+def pair(a: Any, b: Any, names: tuple[str, str], fused: bool = False) -> tuple[Any, Any, str, str]:
+    """Validate two polygons and bring them to one path: ``(A, B, out_kind, path)``."""
+    return unify(operand(a, names[0], fused), operand(b, names[1], fused))
+
+
+def one(p: Any, name: str) -> tuple[Any, str, str]:
+    """Validate one polygon: ``(data, out_kind, path)`` with exact lists on path "py"."""
+    op = operand(p, name)
+    if op.path == "py" or FORCE_EXACT:
+        return exact_list(op), _out_kind(op.kind), "py"
+    return op.data, _out_kind(op.kind), op.path
+
+
+def check_convex(p: Any, name: str) -> bool:
+    """Validate ``p`` (errors name it ``name``); True if convex, False if not."""
+    from .errors import NotConvexError
+
+    data, _, path = one(p, name)
+    if path == "py":
+        try:
+            _exact.normalize_list(data, name)
+        except NotConvexError:
+            return False
+        return True
+    fn = _ext.normalize_i if path == "i" else _ext.normalize_f
+    _, _, code, v = fn(data)
+    if code in (Status.TURNS_BOTH_WAYS, Status.SPIKE, Status.WINDS_TWICE):
+        return False
+    raise_status(code, v, name, data)
+    return True
