@@ -240,13 +240,19 @@ def run(kind, P, n_ref, n_coal, rng):
     )
 
     for m in ("intersects", "distance", "penetration"):
-        f = {"intersects": mk.intersects_many, "distance": mk.distance_many,
-             "penetration": mk.penetration_many}[m]
+        f = {
+            "intersects": mk.intersects_many,
+            "distance": mk.distance_many,
+            "penetration": mk.penetration_many,
+        }[m]
         f(RA, RB)  # warm (compiled code is cached on disk)
         t, out = best(lambda f=f: f(RA, RB), 5)
         val = out if m == "intersects" else out.distance if m == "distance" else out.depth
-        ag = agreement(ref, sample, **{{"intersects": "inter", "distance": "dist",
-                                          "penetration": "depth"}[m]: val})
+        ag = agreement(
+            ref,
+            sample,
+            **{{"intersects": "inter", "distance": "dist", "penetration": "depth"}[m]: val},
+        )
         rows.append((m, "minkowski2d", t / P, ag))
         if m == "intersects":
             for meth in ("sum", "gjk"):

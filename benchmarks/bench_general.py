@@ -178,10 +178,15 @@ def main() -> None:
             return
         from minkowski2d.io import read_cgal_dat
 
-        for p, q in (("comb_part1", "comb_part2"), ("fork_part1", "fork_part2"),
-                     ("knife_part1", "knife_part2"), ("random_part1", "random_part2"),
-                     ("rooms_part1", "rooms_part2"), ("wheels_part1", "wheels_part2"),
-                     ("star_200_1", "star_200_2")):
+        for p, q in (
+            ("comb_part1", "comb_part2"),
+            ("fork_part1", "fork_part2"),
+            ("knife_part1", "knife_part2"),
+            ("random_part1", "random_part2"),
+            ("rooms_part1", "rooms_part2"),
+            ("wheels_part1", "wheels_part2"),
+            ("star_200_1", "star_200_2"),
+        ):
             a = read_cgal_dat(DATA / f"{p}.dat")[0]
             b = read_cgal_dat(DATA / f"{q}.dat")[0]
             run_case(f"{p} + {q}", a, b, driver, args.cgal_rc_max, args.reps)

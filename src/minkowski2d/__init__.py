@@ -7,8 +7,9 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from . import errors
-from .animation import animate
 from .batch import Ragged, minkowski_sum_many
 from .collision import (
     Distance,
@@ -36,6 +37,16 @@ from .general import convex_decomposition, minkowski_difference, minkowski_sum_g
 from .trace import MergeTrace, merge_trace
 
 __version__ = "0.1.0"
+
+
+def __getattr__(name: str) -> Any:
+    # the page template and server load only when used (import time matters for CLIs)
+    if name == "animate":
+        from .animation import animate
+
+        return animate
+    raise AttributeError(f"module 'minkowski2d' has no attribute {name!r}")
+
 
 __all__ = [
     "errors",

@@ -72,6 +72,45 @@ class GeometryError(ValueError):
         self.vertex = vertex
         self.hint = hint
 
+    @property
+    def detail(self) -> str:
+        """The message without its leading ``argument: `` and trailing ``(hint)``.
+
+        Examples
+        --------
+        >>> GeometryError("a: bad (do X)", argument="a", hint="do X").detail
+        'bad'
+        """
+        msg = str(self.args[0]) if self.args else ""
+        if self.argument and msg.startswith(f"{self.argument}: "):
+            msg = msg[len(self.argument) + 2 :]
+        if self.hint and msg.endswith(f" ({self.hint})"):
+            msg = msg[: -len(self.hint) - 3]
+        return msg
+
+    def renamed(self, argument: str | None = None, hint: str | None = None) -> GeometryError:
+        """The same error (same class, vertex and detail) naming another argument and/or
+        giving another hint: how the CLI names a file instead of ``a``, and how the page
+        points to its own controls instead of ``hull=True``.
+
+        Examples
+        --------
+        >>> e = NotConvexError("a: not convex at vertex 3 (use hull)", 3, argument="a",
+        ...                    hint="use hull")
+        >>> str(e.renamed("shape.json", "use --hull"))
+        'shape.json: not convex at vertex 3 (use --hull)'
+        """
+        arg = argument if argument is not None else self.argument
+        hint = hint if hint is not None else self.hint
+        msg = self.detail
+        if arg:
+            msg = f"{arg}: {msg}"
+        if hint:
+            msg = f"{msg} ({hint})"
+        new = type(self).__new__(type(self))
+        GeometryError.__init__(new, msg, argument=arg, vertex=self.vertex, hint=hint)
+        return new
+
     def to_dict(self) -> dict[str, object]:
         """The error as a JSON-ready mapping (``type``, ``message``, ``argument``,
         ``vertex``, ``hint``).
