@@ -22,24 +22,30 @@ import json, time
 t0 = time.perf_counter()
 import minkowski2d as mk
 import numpy as np
-t1 = time.perf_counter()
-out = {"import minkowski2d": t1 - t0}
+out = {"import minkowski2d": time.perf_counter() - t0}
+
+
+def first(label, fn, *args):
+    t = time.perf_counter()
+    fn(*args)
+    out[label] = time.perf_counter() - t
+
 
 def ngon(n, r, phase):
     th = np.linspace(0, 2 * np.pi, n, endpoint=False) + phase
     return np.c_[r * np.cos(th), r * np.sin(th)]
 
-a, b = ngon(200, 1.0, 0.1), ngon(200, 0.7, 0.3)
-t = time.perf_counter(); mk.minkowski_sum(a, b); out["first minkowski_sum, two 200-gons"] = time.perf_counter() - t
+
 rng = np.random.default_rng(1)
 A = [ngon(64, 1.0, p) + rng.uniform(-2, 2, 2) for p in rng.uniform(0, 1, 100)]
 B = [ngon(64, 0.5, p) + rng.uniform(-2, 2, 2) for p in rng.uniform(0, 1, 100)]
-t = time.perf_counter(); mk.intersects_many(A, B); out["first intersects_many, 100 pairs of 64-gons"] = time.perf_counter() - t
-t = time.perf_counter(); mk.distance_many(A, B); out["first distance_many, 100 pairs of 64-gons"] = time.perf_counter() - t
 P = [ngon(int(k), 1.0, 0.2) for k in rng.integers(3, 13, 1000)]
-t = time.perf_counter(); mk.minkowski_sum_many(P, P[::-1]); out["first 1,000-pair batch"] = time.perf_counter() - t
 L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
-t = time.perf_counter(); mk.minkowski_sum_general(L, L); out["first small general sum (L ⊕ L)"] = time.perf_counter() - t
+first("first minkowski_sum, two 200-gons", mk.minkowski_sum, ngon(200, 1, 0.1), ngon(200, 0.7, 0.3))
+first("first intersects_many, 100 pairs of 64-gons", mk.intersects_many, A, B)
+first("first distance_many, 100 pairs of 64-gons", mk.distance_many, A, B)
+first("first 1,000-pair batch", mk.minkowski_sum_many, P, P[::-1])
+first("first small general sum (L ⊕ L)", mk.minkowski_sum_general, L, L)
 print(json.dumps(out))
 """
 
