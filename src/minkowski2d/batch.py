@@ -14,7 +14,6 @@ from typing import Any
 import numpy as np
 
 from . import _dispatch as D
-from . import _exact
 from ._coerce import as_array
 from ._core import _ext
 from ._types import ArrayLike2
@@ -310,21 +309,15 @@ def minkowski_sum_many(As: Any, Bs: Any, *, threads: int = 1) -> Ragged:
     a_hi = np.ascontiguousarray(a_hi, np.int64)
     b_lo = np.ascontiguousarray(b_lo, np.int64)
     b_hi = np.ascontiguousarray(b_hi, np.int64)
-    cap = int(np.maximum((a_hi - a_lo) + (b_hi - b_lo), 1).sum())
-    out = np.empty((cap, 2), dt)
-    off = np.empty(P + 1, np.int64)
-    code, q, which, v = fn(pa, a_lo, a_hi, pb, b_lo, b_hi, out, off, threads)
+    coords, off, code, q, which, v = fn(pa, a_lo, a_hi, pb, b_lo, b_hi, threads)
     if code:
         nm = names[which] if which < 2 else "result"
         if which < 2 and nm in ("As", "Bs"):
             nm = f"{nm}[{q}]"
-        if code in (D.Status.TURNS_BOTH_WAYS, D.Status.SPIKE, D.Status.WINDS_TWICE):
-            raise _exact.not_convex(nm, int(code), int(v))
         if code == D.Status.RANGE:
             return _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi)
         raise D.status_error(code, v, nm)
-    total = int(off[-1])
-    return Ragged(out[:total] if 2 * total >= cap else out[:total].copy(), off)
+    return Ragged(coords, off)
 
 
 def _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi) -> Ragged:

@@ -203,94 +203,108 @@ nb::tuple merge_record(In2<T> A, In2<T> B) {
 
 // ------------------------------------------------------------------ batch
 
-// Pair q sums A[a_lo[q]:a_hi[q]] and B[b_lo[q]:b_hi[q]] into `out` (numpy-allocated by
-// the caller with sum(max(la + lb, 1)) rows); the sums are compacted to the front and
-// `off` (P + 1) receives their offsets. Returns (code, pair, which, vertex); on failure
-// the lowest failing pair is reported, whatever the number of threads.
+// Pair q sums A[a_lo[q]:a_hi[q]] and B[b_lo[q]:b_hi[q]]. Returns (coords (K, 2),
+// offsets (P + 1,), code, pair, which, vertex); on failure the lowest failing pair is
+// reported, whatever the number of threads. Each thread sums a contiguous chunk of pairs
+// into its own buffer; after the prefix sum each copies its chunk into place, so both
+// phases run in parallel and nothing is compacted serially.
 template <class T>
 nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b_lo,
-                    In1<i64> b_hi, Mut2<T> O, nb::ndarray<i64, nb::ndim<1>, nb::c_contig> OFF,
-                    int threads) {
+                    In1<i64> b_hi, int threads) {
   const T* pa = A.data();
   const T* pb = B.data();
   const i64* alo = a_lo.data();
   const i64* ahi = a_hi.data();
   const i64* blo = b_lo.data();
   const i64* bhi = b_hi.data();
-  T* buf = O.data();
-  i64* off = OFF.data();
   const i64 P = (i64)a_lo.shape(0);
+  i64* off = alloc<i64>((std::size_t)P + 1);
+  T* coords = nullptr;
   int code = mk::OK, which = 0;
-  i64 pair = 0, vertex = 0;
+  i64 pair = 0, vertex = 0, total = 0;
   {
     nb::gil_scoped_release nogil;
-    i64 big = 1;
-    for (i64 q = 0; q < P; ++q)
-      big = std::max(big, std::max(ahi[q] - alo[q], bhi[q] - blo[q]));
-    // off[q] holds the capacity offset of pair q until the compaction below
-    off[0] = 0;
-    for (i64 q = 0; q < P; ++q)
-      off[q + 1] = off[q] + std::max<i64>((ahi[q] - alo[q]) + (bhi[q] - blo[q]), 1);
-    Buf<i64> cnt(P);
     int nt = std::max(1, std::min<int>(threads, (int)std::max<i64>(1, P / 64)));
-    struct Fail {
-      i64 pair = -1;
+    struct Chunk {
+      i64 q0 = 0, q1 = 0;
+      std::unique_ptr<T[]> buf;
+      i64 used = 0;
+      i64 fail = -1;
       int code = 0, which = 0;
       i64 vertex = 0;
     };
-    std::vector<Fail> fails(nt);
-    auto work = [&](int t) {
-      i64 q0 = P * t / nt, q1 = P * (t + 1) / nt;
+    std::vector<Chunk> ch(nt);
+    auto run = [&](int t) {
+      Chunk& c = ch[t];
+      c.q0 = P * t / nt;
+      c.q1 = P * (t + 1) / nt;
+      i64 big = 1, cap = 0;
+      for (i64 q = c.q0; q < c.q1; ++q) {
+        i64 la = ahi[q] - alo[q], lb = bhi[q] - blo[q];
+        big = std::max(big, std::max(la, lb));
+        cap += std::max<i64>(la + lb, 1);
+      }
+      c.buf.reset(new T[2 * (std::size_t)std::max<i64>(cap, 1)]);
       Buf<i64> keep(big), ia(big), ib(big);
       Buf<std::int8_t> turn(big);
-      for (i64 q = q0; q < q1; ++q) {
+      T* out = c.buf.get();
+      i64 o = 0;
+      for (i64 q = c.q0; q < c.q1; ++q) {
         mk::Norm a = mk::normalize(pa, alo[q], ahi[q], keep.data(), turn.data(), ia.data());
         if (a.code) {
-          fails[t] = Fail{q, a.code, 0, a.vertex};
+          c.fail = q, c.code = a.code, c.which = 0, c.vertex = a.vertex;
           return;
         }
         mk::Norm b = mk::normalize(pb, blo[q], bhi[q], keep.data(), turn.data(), ib.data());
         if (b.code) {
-          fails[t] = Fail{q, b.code, 1, b.vertex};
+          c.fail = q, c.code = b.code, c.which = 1, c.vertex = b.vertex;
           return;
         }
-        i64 k = mk::merge(pa, a, pb, b, buf + 2 * off[q]);
+        i64 k = mk::merge(pa, a, pb, b, out + 2 * o);
         if (k < 0) {
-          fails[t] = Fail{q, mk::OVERFLOW, 2, 0};
+          c.fail = q, c.code = mk::OVERFLOW, c.which = 2;
           return;
         }
-        cnt.data()[q] = k;
+        off[q + 1] = k;  // a count for now; the prefix sum below makes it an offset
+        o += k;
       }
+      c.used = o;
     };
-    if (nt == 1) {
-      work(0);
-    } else {
+    auto parallel = [&](auto&& fn) {
+      if (nt == 1) {
+        fn(0);
+        return;
+      }
       std::vector<std::thread> pool;
-      for (int t = 1; t < nt; ++t) pool.emplace_back(work, t);
-      work(0);
+      for (int t = 1; t < nt; ++t) pool.emplace_back(fn, t);
+      fn(0);
       for (auto& th : pool) th.join();
-    }
-    for (auto& f : fails)
-      if (f.pair >= 0) {
-        code = f.code;
-        pair = f.pair;
-        which = f.which;
-        vertex = f.vertex;
+    };
+    parallel(run);
+    for (auto& c : ch)
+      if (c.fail >= 0) {
+        code = c.code, pair = c.fail, which = c.which, vertex = c.vertex;
         break;
       }
     if (code == mk::OK) {
-      // compact in place, front to back (each destination is at or before its source)
-      i64 o = 0;
-      for (i64 q = 0; q < P; ++q) {
-        i64 src = off[q], k = cnt.data()[q];
-        if (src != o) std::memmove(buf + 2 * o, buf + 2 * src, sizeof(T) * 2 * k);
-        off[q] = o;
-        o += k;
-      }
-      off[P] = o;
+      off[0] = 0;
+      for (i64 q = 0; q < P; ++q) off[q + 1] += off[q];
+      total = off[P];
+      coords = alloc<T>(2 * (std::size_t)total);
+      parallel([&](int t) {
+        Chunk& c = ch[t];
+        if (c.used) std::memcpy(coords + 2 * off[c.q0], c.buf.get(), sizeof(T) * 2 * c.used);
+        c.buf.reset();
+      });
     }
   }
-  return nb::make_tuple(code, pair, which, vertex);
+  if (code != mk::OK) {
+    coords = alloc<T>(0);
+    total = 0;
+    std::fill(off, off + P + 1, 0);
+  }
+  return nb::make_tuple(owned(coords, (std::size_t)total, 2), owned(off, (std::size_t)P + 1, 0),
+                        code, pair, which, vertex);
 }
 
 // ------------------------------------------------------------------ Python sequences
@@ -508,10 +522,10 @@ NB_MODULE(_ext, m) {
   m.def("merge_record_i", &merge_record<i64>, "a"_a.noconvert(), "b"_a.noconvert());
   m.def("sum_batch_f", &sum_batch<double>, "a"_a.noconvert(), "a_lo"_a.noconvert(),
         "a_hi"_a.noconvert(), "b"_a.noconvert(), "b_lo"_a.noconvert(), "b_hi"_a.noconvert(),
-        "out"_a.noconvert(), "offsets"_a.noconvert(), "threads"_a);
+        "threads"_a);
   m.def("sum_batch_i", &sum_batch<i64>, "a"_a.noconvert(), "a_lo"_a.noconvert(),
         "a_hi"_a.noconvert(), "b"_a.noconvert(), "b_lo"_a.noconvert(), "b_hi"_a.noconvert(),
-        "out"_a.noconvert(), "offsets"_a.noconvert(), "threads"_a);
+        "threads"_a);
   m.def("sum_lists", &sum_lists);
   m.def("flatten", &flatten);
   m.def("orient_f", &orient_many<double>, "p"_a.noconvert(), "q"_a.noconvert(), "r"_a.noconvert());
