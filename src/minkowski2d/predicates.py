@@ -1,12 +1,15 @@
 """Exact geometric predicates: orientation and the cross-product sign of two edge vectors.
 
-For ints and Fractions the arithmetic is exact as written. For floats the test is
-*filtered*: the float value decides when it is larger than a proven error bound, and an
-exact rational evaluation decides otherwise (a float is an exact dyadic rational, so
-``Fraction(x)`` loses nothing). No angle is ever computed.
-
-The error bound is Shewchuk's ``ccwerrboundA = (3 + 16 eps) eps`` with ``eps = 2**-53``,
-which covers the rounding of the coordinate differences as well as of the products.
+Floats and ints with ``|x| < 2**62`` are decided by the compiled core
+(:mod:`minkowski2d._core`): ints with 128-bit products, floats with a filtered test -- the
+float value decides when it is larger than a proven error bound (Shewchuk's
+``ccwerrboundA = (3 + 16 eps) eps``, ``eps = 2**-53``, which covers the rounding of the
+coordinate differences as well as of the products) -- and an exact fixed-point evaluation
+otherwise, at every magnitude from subnormals to ``1.7e308``. Larger ints, Fractions and
+mixtures (a Fraction next to a float, a large int next to a float) take an exact
+pure-Python path: a float is an exact dyadic rational, so ``Fraction(x)`` loses nothing,
+and a Fraction is never rounded to a float. No angle is ever computed. NaN and infinite
+coordinates raise :class:`~minkowski2d.errors.NonFiniteError`.
 
 Examples
 --------
@@ -23,10 +26,14 @@ Examples
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from typing import Any
 
 import numpy as np
+
+from ._core import _ext
+from .errors import NonFiniteError, ShapeError
 
 __all__ = ["orient", "cross_sign", "orient_array", "ERRBOUND", "MINBOUND"]
 
@@ -39,49 +46,100 @@ ERRBOUND = (3.0 + 16.0 * EPS) * EPS
 MINBOUND = ERRBOUND * 2.0**-960
 
 
+_INT_LIMIT = 1 << 62  # the core's int64 predicate: |x| < 2**62
+_F64_EXACT_INT = 1 << 53  # ints up to this convert to float64 exactly
+# float types whose conversion to a Python float is exact
+_FLOATS = (float, np.float64, np.float32, np.float16)
+
+
+def _kind(v: Any) -> int:
+    """0: an int with |v| <= 2**53 (the core's int predicate takes it, and it converts to
+    float64 exactly); 1: a float the core takes; 2: an int with 2**53 < |v| < 2**62 (the
+    core's int predicate only); 3: anything else (exact Python)."""
+    if isinstance(v, _FLOATS):
+        return 1
+    if isinstance(v, (int, np.integer)):
+        a = abs(int(v))
+        if a <= _F64_EXACT_INT:
+            return 0  # both an int the core takes and an exact float
+        return 2 if a < _INT_LIMIT else 3
+    return 3
+
+
+def _nonfinite(name: str, v: Any) -> NonFiniteError:
+    return NonFiniteError(
+        f"{name}: non-finite coordinate ({v!r})",
+        argument=name,
+        hint="coordinates must be finite numbers",
+    )
+
+
+def _exact(v: Any, name: str) -> Any:
+    """An exact rational stand-in for v: floats become Fractions (exactly), ints and
+    Fractions stay as they are."""
+    if isinstance(v, (float, np.floating)):
+        if not (math.isfinite(v) if isinstance(v, float) else np.isfinite(v)):
+            raise _nonfinite(name, v)
+        return Fraction(*v.as_integer_ratio())
+    if isinstance(v, np.integer):
+        return int(v)
+    return v
+
+
+def _cross(pts: tuple[Any, ...], names: tuple[str, ...]) -> int:
+    """Exact sign of (pts[1] - pts[0]) x (pts[3] - pts[2])."""
+    vals = [c for p in pts for c in (p[0], p[1])]
+    kinds = [_kind(v) for v in vals]
+    if 1 in kinds:
+        for i, v in enumerate(vals):
+            if kinds[i] == 1 and not math.isfinite(v):
+                raise _nonfinite(names[i // 2], v)
+    top = max(kinds)
+    if top == 0:  # ints, |x| <= 2**53
+        return _ext.cross_sign_i(*(int(v) for v in vals))
+    if top == 1:  # floats, and ints that convert exactly
+        return _ext.cross_sign_f(*(float(v) for v in vals))
+    if top == 2 and 1 not in kinds:  # ints, |x| < 2**62
+        return _ext.cross_sign_i(*(int(v) for v in vals))
+    # large ints next to floats, ints beyond 2**62, Fractions, other exact numbers
+    e = [_exact(v, names[i // 2]) for i, v in enumerate(vals)]
+    d = (e[2] - e[0]) * (e[7] - e[5]) - (e[3] - e[1]) * (e[6] - e[4])
+    return (d > 0) - (d < 0)
+
+
+# Private helpers other modules (convex.py) call with coordinates of one known kind.
+
+
 def _sgn(v: Any) -> int:
     return (v > 0) - (v < 0)
 
 
 def _cross_exact(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
+    """Sign of (a1 - a0) x (b1 - b0) in the inputs' own arithmetic (ints, Fractions)."""
     d = (a1[0] - a0[0]) * (b1[1] - b0[1]) - (a1[1] - a0[1]) * (b1[0] - b0[0])
     return (d > 0) - (d < 0)
 
 
 def _cross_float(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
-    """Filtered sign of (a1 - a0) x (b1 - b0) for float coordinates."""
-    ux = a1[0] - a0[0]
-    uy = a1[1] - a0[1]
-    vx = b1[0] - b0[0]
-    vy = b1[1] - b0[1]
-    # A zero difference is exact (x - y == 0 only when x == y), so is the sign of any
-    # difference; a product with an exactly-zero factor is exactly zero.
-    if ux == 0.0 or vy == 0.0:
-        return -(_sgn(uy) * _sgn(vx))
-    if uy == 0.0 or vx == 0.0:
-        return _sgn(ux) * _sgn(vy)
-    lft = ux * vy
-    rgt = uy * vx
-    det = lft - rgt
-    bound = ERRBOUND * (abs(lft) + abs(rgt))
-    if bound >= MINBOUND:
-        if det > bound:
-            return 1
-        if -det > bound:
-            return -1
-    return _cross_fraction(a0, a1, b0, b1)
+    """Exact sign of (a1 - a0) x (b1 - b0) for finite float coordinates (the core)."""
+    return _ext.cross_sign_f(
+        float(a0[0]),
+        float(a0[1]),
+        float(a1[0]),
+        float(a1[1]),
+        float(b0[0]),
+        float(b0[1]),
+        float(b1[0]),
+        float(b1[1]),
+    )
 
 
 def _cross_fraction(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
-    F = Fraction
-    d = (F(a1[0]) - F(a0[0])) * (F(b1[1]) - F(b0[1])) - (F(a1[1]) - F(a0[1])) * (
-        F(b1[0]) - F(b0[0])
-    )
+    """Exact sign of (a1 - a0) x (b1 - b0) in rational arithmetic (floats, ints,
+    Fractions)."""
+    e = [_exact(v, n) for p, n in zip((a0, a1, b0, b1), ("a0", "a1", "b0", "b1")) for v in p]
+    d = (e[2] - e[0]) * (e[7] - e[5]) - (e[3] - e[1]) * (e[6] - e[4])
     return (d > 0) - (d < 0)
-
-
-def _has_float(*pts: Any) -> bool:
-    return any(isinstance(v, (float, np.floating)) for p in pts for v in p)
 
 
 def cross_sign(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
@@ -98,17 +156,20 @@ def cross_sign(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
         ``1`` if ``b1 - b0`` is counter-clockwise of ``a1 - a0``, ``-1`` if clockwise,
         ``0`` if parallel.
 
+    Raises
+    ------
+    NonFiniteError
+        A coordinate is NaN or infinite (``argument`` names the point).
+
     Examples
     --------
     >>> cross_sign((0, 0), (1, 0), (5, 5), (5, 6))
     1
+    >>> from fractions import Fraction
+    >>> cross_sign((0.0, 0.0), (1.0, 0.1), (0, 0), (10, Fraction(1)))  # 0.1 is not 1/10
+    -1
     """
-    if _has_float(a0, a1, b0, b1):
-        f = [(float(p[0]), float(p[1])) for p in (a0, a1, b0, b1)]
-        if all(np.isfinite(v) for p in f for v in p):
-            return _cross_float(*f)
-        raise ValueError("cross_sign: non-finite coordinate")
-    return _cross_exact(a0, a1, b0, b1)
+    return _cross((a0, a1, b0, b1), ("a0", "a1", "b0", "b1"))
 
 
 def orient(p: Any, q: Any, r: Any) -> int:
@@ -117,6 +178,11 @@ def orient(p: Any, q: Any, r: Any) -> int:
     Returns ``1`` for a left turn (counter-clockwise), ``-1`` for a right turn, ``0`` when
     the three points are collinear.
 
+    Raises
+    ------
+    NonFiniteError
+        A coordinate is NaN or infinite (``argument`` is ``"p"``, ``"q"`` or ``"r"``).
+
     Examples
     --------
     >>> orient((0, 0), (1, 1), (2, 2))
@@ -124,7 +190,14 @@ def orient(p: Any, q: Any, r: Any) -> int:
     >>> orient((0, 0.1), (1, 0.2), (2, 0.3))  # collinear in decimal, not as floats
     -1
     """
-    return cross_sign(p, q, p, r)
+    return _cross((p, q, p, r), ("p", "q", "p", "r"))
+
+
+def _int_span(v: np.ndarray) -> int:
+    """max |x| over an int array, as a Python int (no overflow at -2**63)."""
+    if v.size == 0:
+        return 0
+    return max(int(v.max()), -int(v.min()))
 
 
 def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
@@ -132,7 +205,7 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
 
     Parameters
     ----------
-    p, q, r : (n, 2) int or float
+    p, q, r : (n, 2) int, float or Fraction
         Triangle corners (broadcastable).
 
     Returns
@@ -140,42 +213,53 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
     (n,) int8
         Sign of ``(q - p) x (r - p)`` for each row.
 
+    Raises
+    ------
+    NonFiniteError
+        A coordinate is NaN or infinite (``argument`` names the array, ``vertex`` the row).
+
     Examples
     --------
     >>> orient_array([[0, 0], [0, 0]], [[1, 0], [1, 1]], [[0, 1], [2, 2]]).tolist()
     [1, 0]
     """
-    p, q, r = (np.asarray(v) for v in (p, q, r))
-    p, q, r = np.broadcast_arrays(p, q, r)
-    if all(v.dtype.kind in "iu" for v in (p, q, r)) and max(
-        int(np.abs(v).max(initial=0)) for v in (p, q, r)
-    ) < (1 << 30):
-        pi, qi, ri = (v.astype(np.int64) for v in (p, q, r))
-        d = (qi[:, 0] - pi[:, 0]) * (ri[:, 1] - pi[:, 1]) - (qi[:, 1] - pi[:, 1]) * (
-            ri[:, 0] - pi[:, 0]
+    names = ("p", "q", "r")
+    arrs = [np.asarray(v) for v in (p, q, r)]
+    arrs = [v.reshape(0, 2) if v.size == 0 else v for v in arrs]
+    arrs = list(np.broadcast_arrays(*arrs))
+    if arrs[0].ndim != 2 or arrs[0].shape[1] != 2:
+        raise ShapeError(
+            f"orient_array: p, q and r must broadcast to shape (n, 2), got {arrs[0].shape}",
+            argument="p",
         )
-        return np.sign(d).astype(np.int8)
-    if all(v.dtype.kind == "f" for v in (p, q, r)) or (
-        all(v.dtype.kind in "iuf" for v in (p, q, r))
-        and not any(
-            v.dtype.kind in "iu" and int(np.abs(v).max(initial=0)) > (1 << 53) for v in (p, q, r)
-        )
+    kinds = [v.dtype.kind for v in arrs]
+    for name, v in zip(names, arrs):
+        if v.dtype.kind == "f":
+            bad = ~np.isfinite(v).all(axis=1)
+            if bad.any():
+                row = int(np.flatnonzero(bad)[0])
+                raise NonFiniteError(
+                    f"{name}: non-finite coordinate in row {row}",
+                    argument=name,
+                    vertex=row,
+                    hint="coordinates must be finite numbers",
+                )
+    if all(k in "iub" for k in kinds) and max(_int_span(v) for v in arrs) < _INT_LIMIT:
+        pi, qi, ri = (np.ascontiguousarray(v, dtype=np.int64) for v in arrs)
+        return _ext.orient_i(pi, qi, ri)
+    if (
+        all(k in "iubf" for k in kinds)
+        and all(v.dtype.itemsize <= 8 for v in arrs if v.dtype.kind == "f")
+        and all(_int_span(v) <= _F64_EXACT_INT for v in arrs if v.dtype.kind in "iub")
     ):
-        pf, qf, rf = (v.astype(np.float64) for v in (p, q, r))
-        with np.errstate(all="ignore"):
-            lft = (qf[:, 0] - pf[:, 0]) * (rf[:, 1] - pf[:, 1])
-            rgt = (qf[:, 1] - pf[:, 1]) * (rf[:, 0] - pf[:, 0])
-            det = lft - rgt
-            bound = ERRBOUND * (np.abs(lft) + np.abs(rgt))
-        out = np.sign(det).astype(np.int8)
-        sure = (np.abs(det) > bound) & (bound >= MINBOUND)
-        for k in np.flatnonzero(~sure):
-            out[k] = _cross_fraction(*(tuple(float(c) for c in v[k]) for v in (pf, qf, pf, rf)))
-        return out
-    return np.array(
-        [
-            orient(tuple(a), tuple(b), tuple(c))
-            for a, b, c in zip(p.tolist(), q.tolist(), r.tolist())
-        ],
-        dtype=np.int8,
-    )
+        pf, qf, rf = (np.ascontiguousarray(v, dtype=np.float64) for v in arrs)
+        return _ext.orient_f(pf, qf, rf)
+    # object arrays (Fractions, large ints), long doubles, large ints next to floats
+    out = np.empty(len(arrs[0]), dtype=np.int8)
+    for k, (a, b, c) in enumerate(zip(*(v.tolist() for v in arrs))):
+        try:
+            out[k] = _cross((a, b, a, c), ("p", "q", "p", "r"))
+        except NonFiniteError as exc:
+            exc.vertex = k
+            raise
+    return out
