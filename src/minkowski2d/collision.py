@@ -381,7 +381,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
     RA, _, _, RB, _, _, P, names = as_ragged_pair(As, Bs)
     many_a, many_b = names[0] == "As", names[1] == "Bs"
     hit = np.zeros(P, np.int8)
-    res = np.zeros((P, 7))
+    res = np.zeros((P if mode in (_DISTANCE, _PENETRATION) else 1, 7))
     need = mode == _PENETRATION
     prepared = []
     for R, nm, many in ((RA, names[0], many_a), (RB, names[1], many_b)):
@@ -393,7 +393,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
         inv = np.empty(n if need else 1)
         off = np.ascontiguousarray(R.offsets, dtype=np.int64)
         is_int = R.coords.dtype.kind in "iu"
-        code, q, v = _ext.coll_prep(p, off, is_int, mode, idx, kk, ss, inv)
+        code, q, v = _ext.coll_prep(p, off, is_int, mode, idx, kk, ss, inv, threads)
         if code == _OUT_OF_RANGE:
             prepared = None
             break
@@ -402,6 +402,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
         prepared.append((p, off, idx, kk, ss, inv))
     if prepared is None:
         # coordinates the kernels cannot take exactly: the exact path, pair by pair
+        res = np.zeros((P, 7))
         for q in range(P):
             a = RA[q if many_a else 0]
             b = RB[q if many_b else 0]

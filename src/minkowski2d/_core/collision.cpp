@@ -32,9 +32,9 @@ void need(bool ok, const char* what) {
   if (!ok) throw nb::value_error(what);
 }
 
-// prep(p, off, is_int, mode, idx, kk, ss, inv) -> (code, polygon, vertex)
+// prep(p, off, is_int, mode, idx, kk, ss, inv, threads) -> (code, polygon, vertex)
 nb::tuple prep_b(CIn2<double> p, CIn1<i64> off, bool is_int, int mode, W1<i64> idx,
-                 W1<i64> kk, W1<i64> ss, W1<double> inv) {
+                 W1<i64> kk, W1<i64> ss, W1<double> inv, int threads) {
   need(p.shape(1) == 2, "prep: p must have shape (n, 2)");
   i64 P = (i64)off.shape(0) - 1;
   i64 n = (i64)p.shape(0);
@@ -47,7 +47,7 @@ nb::tuple prep_b(CIn2<double> p, CIn1<i64> off, bool is_int, int mode, W1<i64> i
   {
     nb::gil_scoped_release nogil;
     r = mk::coll::prep(p.data(), n, o, P, is_int, mode, idx.data(), kk.data(), ss.data(),
-                       inv.data());
+                       inv.data(), threads < 1 ? 1 : threads);
   }
   return nb::make_tuple(r.code, r.q, r.v);
 }
@@ -174,7 +174,7 @@ void bind_collision(nb::module_& m) {
   m.attr("COLL_OUT_OF_RANGE") = (int)mk::coll::OUT_OF_RANGE;
   m.def("coll_prep", &prep_b, "p"_a.noconvert(), "off"_a.noconvert(), "is_int"_a, "mode"_a,
         "idx"_a.noconvert(), "kk"_a.noconvert(), "ss"_a.noconvert(), "inv"_a.noconvert(),
-        "Normalize every polygon of a ragged float64 array for the collision kernels.");
+        "threads"_a = 1, "Normalize every polygon of a ragged float64 array for the collision kernels.");
   m.def("coll_pairs", &pairs_b, "pa"_a.noconvert(), "offa"_a.noconvert(), "ida"_a.noconvert(),
         "ka"_a.noconvert(), "sa"_a.noconvert(), "inva"_a.noconvert(), "pb"_a.noconvert(),
         "offb"_a.noconvert(), "idb"_a.noconvert(), "kb"_a.noconvert(), "sb"_a.noconvert(),

@@ -157,23 +157,16 @@ struct PrepResult {
   i64 q, v;
 };
 
-// Normalize polygon q = p[off[q]:off[q+1]] for every q: its normalized vertex indices to
-// idx[off[q]:off[q]+kk[q]], its split to ss[q] and, for PENETRATION, the inverse length
-// of its normalized edge t to inv[off[q] + t]. Returns (code, polygon, vertex).
-inline PrepResult prep(const double* p, i64 np_, const i64* off, i64 P, bool is_int, int mode,
-                       i64* idx, i64* kk, i64* ss, double* inv) {
-  bool values = mode_values(mode), need_len = mode == PENETRATION;
-  if (out_of_range(p, 0, np_, is_int, values) >= 0) {
-    for (i64 q = 0; q < P; ++q) {
-      i64 r = out_of_range(p, off[q], off[q + 1], is_int, values);
-      if (r >= 0) return {OUT_OF_RANGE, q, r};
-    }
-  }
+// Normalize polygons q0 <= q < q1 of p (see prep(), which checked the range); returns
+// the first failure.
+inline PrepResult prep_range(const double* p, const i64* off, i64 q0, i64 q1, int mode,
+                             i64* idx, i64* kk, i64* ss, double* inv) {
+  bool need_len = mode == PENETRATION;
   i64 big = 1;
-  for (i64 q = 0; q < P; ++q) big = std::max(big, off[q + 1] - off[q]);
+  for (i64 q = q0; q < q1; ++q) big = std::max(big, off[q + 1] - off[q]);
   std::vector<i64> keep(big);
   std::vector<std::int8_t> turn(big);
-  for (i64 q = 0; q < P; ++q) {
+  for (i64 q = q0; q < q1; ++q) {
     i64 lo = off[q], hi = off[q + 1];
     if (hi <= lo) return {EMPTY, q, 0};
     Norm r = normalize(p, lo, hi, keep.data(), turn.data(), idx + lo);
@@ -190,6 +183,36 @@ inline PrepResult prep(const double* p, i64 np_, const i64* off, i64 P, bool is_
       }
     }
   }
+  return {OK, 0, 0};
+}
+
+// Normalize polygon q = p[off[q]:off[q+1]] for every q: its normalized vertex indices to
+// idx[off[q]:off[q]+kk[q]], its split to ss[q] and, for PENETRATION, the inverse length
+// of its normalized edge t to inv[off[q] + t]. Returns (code, polygon, vertex) of the
+// first polygon out of range (all are checked first, as the numba kernel did) or else
+// the first that fails to normalize. `threads` contiguous chunks of polygons run in
+// parallel; the result does not depend on it.
+inline PrepResult prep(const double* p, i64 np_, const i64* off, i64 P, bool is_int, int mode,
+                       i64* idx, i64* kk, i64* ss, double* inv, int threads = 1) {
+  bool values = mode_values(mode);
+  if (out_of_range(p, 0, np_, is_int, values) >= 0) {
+    for (i64 q = 0; q < P; ++q) {
+      i64 r = out_of_range(p, off[q], off[q + 1], is_int, values);
+      if (r >= 0) return {OUT_OF_RANGE, q, r};
+    }
+  }
+  int nt = (int)std::max<i64>(1, std::min<i64>(threads, P / 64));
+  if (nt <= 1) return prep_range(p, off, 0, P, mode, idx, kk, ss, inv);
+  std::vector<PrepResult> res(nt, PrepResult{OK, 0, 0});
+  std::vector<std::thread> pool;
+  auto work = [&](int t) {
+    res[t] = prep_range(p, off, P * t / nt, P * (t + 1) / nt, mode, idx, kk, ss, inv);
+  };
+  for (int t = 1; t < nt; ++t) pool.emplace_back(work, t);
+  work(0);
+  for (auto& th : pool) th.join();
+  for (auto& r : res)
+    if (r.code != OK) return r;
   return {OK, 0, 0};
 }
 
