@@ -339,8 +339,8 @@ def run_threads(rng, P=1_000_000, threads=2):
             ("penetration", mk.penetration_many),
         ):
             f(RA, RB)
-            t1, o1 = best(lambda f=f: f(RA, RB, threads=1), 3)
-            tn, on = best(lambda f=f: f(RA, RB, threads=threads), 3)
+            t1, o1 = best(lambda f=f, a=RA, b=RB: f(a, b, threads=1), 3)
+            tn, on = best(lambda f=f, a=RA, b=RB: f(a, b, threads=threads), 3)
             parts = [(o1, on)] if isinstance(o1, np.ndarray) else list(zip(o1, on))
             same = all(np.array_equal(x, y) for x, y in parts)
             assert same, (kind, m)
