@@ -603,3 +603,26 @@ def test_batch_threads_argument():
         with pytest.raises(NotConvexError, match=r"^Bs\[300\]: not convex") as exc:
             mk.penetration_many(SQ, Bs, threads=threads)
         assert exc.value.argument == "Bs[300]" and exc.value.vertex is not None
+
+
+@pytest.mark.parametrize(
+    "scale", [2.0**-1070, 2.0**-1000, 2.0**-450, 2.0**450, 2.0**1000, 1e307, 5e307]
+)
+def test_signs_at_every_float_magnitude(scale):
+    """intersects (walk and GJK, single and batch) and contains decide on the compiled
+    path at any finite magnitude (subnormals, overflowing differences) and agree with the
+    exact reference."""
+    rng = np.random.default_rng(int(abs(math.log2(scale))))
+    As, Bs = [], []
+    for _ in range(60):
+        for lst in (As, Bs):
+            pts = rng.integers(-3, 4, size=(int(rng.integers(1, 7)), 2))
+            lst.append(mk.convex_hull(pts).astype(float) * scale)
+    want = [ref_inside(d_hull(a.tolist(), b.tolist())) for a, b in zip(As, Bs)]
+    for method in ("auto", "sum", "gjk"):
+        assert mk.intersects_many(As, Bs, method=method).tolist() == want
+        assert [mk.intersects(a, b, method=method) for a, b in zip(As, Bs)] == want
+    qs = [tuple(v) for v in (rng.integers(-3, 4, size=(40, 2)) * scale).tolist()]
+    for a in As[:10]:
+        H = oracle.hull(a.tolist())
+        assert mk.contains(a, qs).tolist() == [ref_inside(H, (F(x), F(y))) for x, y in qs]

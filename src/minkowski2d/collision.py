@@ -75,9 +75,10 @@ class Distance(NamedTuple):
     point_a, point_b : (2,) float64 ndarray
         Witnesses: ``point_a`` on A and ``point_b`` on B with
         ``|point_a - point_b| == distance`` (up to rounding of the witness coordinates).
-        When the polygons intersect both are the same point of A ∩ B (an exact common
-        point when they only touch; a floating-point one, from barycentric weights, when
-        their interiors overlap).
+        When the polygons intersect both are the same point of A ∩ B, bit for bit
+        (``point_a.tolist() == point_b.tolist()``): an exact common point when they only
+        touch; a floating-point one, from barycentric weights, when their interiors
+        overlap.
     """
 
     distance: Any
