@@ -331,14 +331,40 @@ def run_contains(rng, n_pts=1_000_000, n_ref=2000):
         print(f"| {who} | {tt / n_pts * 1e9:.1f} | {ratio} | {100 * ok:.2f}% agree |")
 
 
+def run_threads(rng, P=1_000_000, threads=2):
+    """The batch with ``threads=1`` and ``threads=N`` on the same pairs (results checked
+    identical)."""
+    print(f"\n## threads: {P} pairs, threads=1 vs threads={threads}")
+    print("| workload | query | threads=1 µs/pair | threads=N µs/pair | speed-up |")
+    print("|---|---|---|---|---|")
+    for kind in ("hull8", "ngon64"):
+        RA, RB = make(kind, rng, P)
+        for m, f in (
+            ("intersects", mk.intersects_many),
+            ("distance", mk.distance_many),
+            ("penetration", mk.penetration_many),
+        ):
+            f(RA, RB)
+            t1, o1 = best(lambda f=f, a=RA, b=RB: f(a, b, threads=1), 3)
+            tn, on = best(lambda f=f, a=RA, b=RB: f(a, b, threads=threads), 3)
+            parts = [(o1, on)] if isinstance(o1, np.ndarray) else list(zip(o1, on))
+            same = all(np.array_equal(x, y) for x, y in parts)
+            assert same, (kind, m)
+            print(f"| {kind} | {m} | {t1 / P * 1e6:.3f} | {tn / P * 1e6:.3f} | {t1 / tn:.2f}x |")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--pairs", type=int, default=100_000)
     ap.add_argument("--ref", type=int, default=0, help="pairs checked exactly (default 1000/100)")
     ap.add_argument("--coal", type=int, default=20_000)
-    ap.add_argument("--only", choices=("hull8", "ngon64", "contains"), default=None)
+    ap.add_argument("--only", choices=("hull8", "ngon64", "contains", "threads"), default=None)
+    ap.add_argument("--threads", type=int, default=2, help="threads for the threads section")
     args = ap.parse_args()
     rng = np.random.default_rng(2024)
+    if args.only == "threads":
+        run_threads(rng, 1_000_000 if args.pairs == 100_000 else args.pairs, args.threads)
+        return
     for kind in ("hull8", "ngon64"):
         if args.only and kind != args.only:
             continue

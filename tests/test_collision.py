@@ -528,3 +528,125 @@ def test_common_point_on_a_thin_minkowski_difference():
     d = mk.distance(a, b)
     assert d.distance == 0.0
     assert math.hypot(*(d.point_a - d.point_b)) <= 1e-9
+
+
+@SETTINGS
+@given(convex_float(max_size=12), convex_float(max_size=12), st.floats(0.0, 1.0))
+def test_overlapping_distance_witnesses_are_one_point(a, b, t):
+    """Issue 9: when the polygons intersect, distance() documents point_a == point_b; the
+    two witnesses must be the very same floats (they used to differ by an ulp)."""
+    # move B so that its first vertex lands between A's centroid and A's first vertex:
+    # the pair then overlaps (or touches) in most examples
+    ca = np.mean(np.array(a, float), axis=0)
+    tgt = ca + t * (np.array(a[0], float) - ca)
+    b = [(x - b[0][0] + tgt[0], y - b[0][1] + tgt[1]) for x, y in b]
+    assume(mk.is_convex(b) or len(b) < 3)
+    d = mk.distance(a, b)
+    if d.distance == 0.0:
+        assert d.point_a.tolist() == d.point_b.tolist()
+    dm = mk.distance_many([a], [b])
+    assert dm.point_a[0].tolist() == d.point_a.tolist()
+    assert dm.point_b[0].tolist() == d.point_b.tolist()
+
+
+def test_overlapping_distance_witnesses_regression():
+    """Issue 9, the reported shape of the bug: overlapping interiors (the common point
+    comes from float barycentric weights), witnesses identical bit for bit, also on the
+    exact path (Fractions) and in the batch."""
+    tri = [(0.1, 0.2), (10.3, 7.7), (-3.0, 5.0)]
+    for s in (0.3, 1.7, 2.9):
+        other = [(x * 0.7 + s, y * 0.9 - s / 3) for x, y in tri]
+        d = mk.distance(tri, other)
+        assert d.distance == 0.0
+        assert d.point_a.tolist() == d.point_b.tolist()
+        fr = [(F(x), F(y)) for x, y in other]
+        de = mk.distance([(F(x), F(y)) for x, y in tri], fr)
+        assert de.distance == 0.0 and de.point_a.tolist() == de.point_b.tolist()
+    a = [(-1.0, 1e-09), (0.0, 349526.0)]
+    w = (1.0, 349526.0 - 1e-09)
+    b = [(x + w[0] / 2, y + w[1] / 2) for x, y in a]
+    d = mk.distance(a, b)
+    assert d.point_a.tolist() == d.point_b.tolist()
+    rng = np.random.default_rng(9)
+    As, Bs = _pairs(rng, 300, 10)
+    As = [x.astype(float) * 0.37 for x in As]
+    Bs = [x.astype(float) * 0.41 for x in Bs]
+    dm = mk.distance_many(As, Bs)
+    hit = mk.intersects_many(As, Bs)
+    assert hit.any()
+    assert (dm.distance[hit] == 0.0).all()
+    assert (dm.point_a[hit] == dm.point_b[hit]).all()
+
+
+@pytest.mark.parametrize("threads", [2, 3, 8])
+def test_batch_threads_identical(threads):
+    """threads splits the pairs over std::threads; every result is bit-identical to the
+    single-threaded run."""
+    rng = np.random.default_rng(threads)
+    As, Bs = _pairs(rng, 700, 12)
+    fl = [a.astype(float) * 0.37 for a in As], [b.astype(float) * 0.53 for b in Bs]
+    for A, B in ((As, Bs), fl, (Ragged.from_list(As), Ragged.from_list(Bs)), (As[0], Bs)):
+        for method in ("auto", "sum", "gjk"):
+            one = mk.intersects_many(A, B, method=method)
+            many = mk.intersects_many(A, B, method=method, threads=threads)
+            assert many.tolist() == one.tolist()
+        d1, dn = mk.distance_many(A, B), mk.distance_many(A, B, threads=threads)
+        p1, pn = mk.penetration_many(A, B), mk.penetration_many(A, B, threads=threads)
+        for x, y in zip((*d1, *p1), (*dn, *pn)):
+            assert np.array_equal(x, y)
+
+
+def test_batch_threads_argument():
+    for bad in (0, -1, 1.5, "2", True):
+        with pytest.raises(ValueError, match="threads"):
+            mk.intersects_many([SQ], [SQ], threads=bad)
+    assert mk.distance_many([SQ], [SQ], threads=4).distance.tolist() == [0.0]
+    # the normalization runs in chunks too: the first bad polygon is still the one named
+    star = [(0, 0), (2, 6), (4, 0), (-1, 4), (5, 4)]
+    Bs = [SQ] * 300 + [star] + [SQ] * 100 + [star] + [SQ] * 20
+    for threads in (1, 2, 5):
+        with pytest.raises(NotConvexError, match=r"^Bs\[300\]: not convex") as exc:
+            mk.penetration_many(SQ, Bs, threads=threads)
+        assert exc.value.argument == "Bs[300]" and exc.value.vertex is not None
+
+
+@pytest.mark.parametrize(
+    "scale", [2.0**-1070, 2.0**-1000, 2.0**-450, 2.0**450, 2.0**1000, 1e307, 5e307]
+)
+def test_signs_at_every_float_magnitude(scale):
+    """intersects (walk and GJK, single and batch) and contains decide on the compiled
+    path at any finite magnitude (subnormals, overflowing differences) and agree with the
+    exact reference."""
+    rng = np.random.default_rng(int(abs(math.log2(scale))))
+    As, Bs = [], []
+    for _ in range(60):
+        for lst in (As, Bs):
+            pts = rng.integers(-3, 4, size=(int(rng.integers(1, 7)), 2))
+            lst.append(mk.convex_hull(pts).astype(float) * scale)
+    want = [ref_inside(d_hull(a.tolist(), b.tolist())) for a, b in zip(As, Bs)]
+    for method in ("auto", "sum", "gjk"):
+        assert mk.intersects_many(As, Bs, method=method).tolist() == want
+        assert [mk.intersects(a, b, method=method) for a, b in zip(As, Bs)] == want
+    qs = [tuple(v) for v in (rng.integers(-3, 4, size=(40, 2)) * scale).tolist()]
+    for a in As[:10]:
+        H = oracle.hull(a.tolist())
+        assert mk.contains(a, qs).tolist() == [ref_inside(H, (F(x), F(y))) for x, y in qs]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.tuples(st.integers(-4, 4), st.integers(-4, 4)), min_size=1, max_size=9))
+def test_exact_normalization_matches_the_core(pts):
+    """The exact path normalizes through the core's int64 normalization; polygons wider
+    than 2**62 take its exact-Python twin, which must agree on everything (indices,
+    split, error kind and vertex) -- checked here on any point list, convex or not."""
+
+    def run(f, p):
+        try:
+            return f(p, "a")
+        except NotConvexError as exc:
+            return (type(exc), exc.vertex, str(exc))
+
+    core = run(C._exact_normalize, pts)
+    assert run(C._exact_normalize_py, pts) == core
+    wide = [(x << 70, y << 70) for x, y in pts]
+    assert run(C._exact_normalize, wide) == core

@@ -37,8 +37,9 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ._coerce import INT, as_array
+from ._core import _ext
 from ._types import ArrayLike2
-from .errors import NotConvexError, OverflowGeometryError, ShapeError
+from .errors import NonFiniteError, NotConvexError, OverflowGeometryError, ShapeError
 
 __all__ = [
     "Distance",
@@ -52,8 +53,14 @@ __all__ = [
     "penetration_many",
 ]
 
-_INTERSECTS, _DISTANCE, _PENETRATION, _GJK, _AUTO = 0, 1, 2, 3, 4
-_OUT_OF_RANGE = 10
+_INTERSECTS, _DISTANCE, _PENETRATION, _GJK, _AUTO = (
+    _ext.COLL_INTERSECTS,
+    _ext.COLL_DISTANCE,
+    _ext.COLL_PENETRATION,
+    _ext.COLL_GJK,
+    _ext.COLL_AUTO,
+)
+_OUT_OF_RANGE = _ext.COLL_OUT_OF_RANGE
 _METHODS = {"auto": _AUTO, "sum": _INTERSECTS, "gjk": _GJK}
 
 
@@ -68,9 +75,10 @@ class Distance(NamedTuple):
     point_a, point_b : (2,) float64 ndarray
         Witnesses: ``point_a`` on A and ``point_b`` on B with
         ``|point_a - point_b| == distance`` (up to rounding of the witness coordinates).
-        When the polygons intersect both are the same point of A ∩ B (an exact common
-        point when they only touch; a floating-point one, from barycentric weights, when
-        their interiors overlap).
+        When the polygons intersect both are the same point of A ∩ B, bit for bit
+        (``point_a.tolist() == point_b.tolist()``): an exact common point when they only
+        touch; a floating-point one, from barycentric weights, when their interiors
+        overlap.
     """
 
     distance: Any
@@ -105,16 +113,20 @@ class Penetration(NamedTuple):
     point_b: np.ndarray
 
 
-def _ck():
-    from . import _collision_kernels
-
-    return _collision_kernels
+_HULL_HINT = "pass hull=True to use the convex hull"
+_WHY = {
+    _ext.TURNS_BOTH_WAYS: "the boundary turns the other way at vertex {v}",
+    _ext.SPIKE: "the boundary doubles back on itself at vertex {v}",
+    _ext.WINDS_TWICE: "the edges wind around more than once (a star polygon?), "
+    "detected at vertex {v}",
+}
 
 
 def _not_convex(name: str, code: int, vertex: int) -> NotConvexError:
-    from .convex import _not_convex as nc
-
-    return nc(name, code, vertex)
+    why = _WHY.get(code, "detected at vertex {v}").format(v=vertex)
+    return NotConvexError(
+        f"{name}: not convex: {why} ({_HULL_HINT})", vertex, argument=name, hint=_HULL_HINT
+    )
 
 
 # --------------------------------------------------------------------------------------
@@ -138,7 +150,17 @@ def _kernel_view(data: np.ndarray) -> np.ndarray:
 def _raise(code: int, name: str, vertex: int) -> None:
     if code == -1:  # pragma: no cover - a guard against a bug, never reached in tests
         raise RuntimeError("GJK did not terminate; please report this input")
+    if code == _ext.NONFINITE:
+        raise NonFiniteError(
+            f"{name}: vertex {vertex} has a non-finite coordinate", argument=name, vertex=vertex
+        )
     raise _not_convex(name, code, vertex)
+
+
+def _threads(threads: Any) -> int:
+    if isinstance(threads, bool) or not isinstance(threads, int | np.integer) or threads < 1:
+        raise ValueError(f"threads must be a positive int, not {threads!r}")
+    return int(threads)
 
 
 def _pair(a: Any, b: Any, mode: int, hull: bool) -> tuple[bool, np.ndarray]:
@@ -148,7 +170,7 @@ def _pair(a: Any, b: Any, mode: int, hull: bool) -> tuple[bool, np.ndarray]:
     db, kb = _operand(b, "b", hull)
     if isinstance(da, np.ndarray) and isinstance(db, np.ndarray):
         row = np.zeros((1, 7))
-        code, which, v, hit = _ck().single(
+        code, which, v, hit = _ext.coll_single(
             _kernel_view(da), _kernel_view(db), mode, ka == INT, kb == INT, row
         )
         if code == 0:
@@ -338,13 +360,13 @@ def contains(poly: ArrayLike2, points: Any, *, hull: bool = False) -> Any:
     dq, kq = as_array([points] if one else points, "points")
     if isinstance(dp, np.ndarray) and isinstance(dq, np.ndarray):
         out = np.zeros(len(dq), np.bool_)
-        code, which, v = _ck().contains_single(
+        code, which, v = _ext.coll_contains(
             _kernel_view(dp), kp == INT, _kernel_view(dq), kq == INT, out
         )
         if code == 0:
             return bool(out[0]) if one else out
         if code != _OUT_OF_RANGE:
-            _raise(int(code), "poly", int(v))
+            _raise(int(code), ("poly", "points")[which], int(v))
     res = _py_contains(_exact_list(dp), _exact_list(dq))
     return bool(res[0]) if one else np.array(res, dtype=np.bool_)
 
@@ -353,14 +375,14 @@ def contains(poly: ArrayLike2, points: Any, *, hull: bool = False) -> Any:
 # batches
 
 
-def _batch(As: Any, Bs: Any, mode: int) -> tuple[np.ndarray, np.ndarray]:
+def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, np.ndarray]:
     from .batch import as_ragged_pair
 
+    threads = _threads(threads)
     RA, _, _, RB, _, _, P, names = as_ragged_pair(As, Bs)
     many_a, many_b = names[0] == "As", names[1] == "Bs"
-    K = _ck()
     hit = np.zeros(P, np.int8)
-    res = np.zeros((P, 7))
+    res = np.zeros((P if mode in (_DISTANCE, _PENETRATION) else 1, 7))
     need = mode == _PENETRATION
     prepared = []
     for R, nm, many in ((RA, names[0], many_a), (RB, names[1], many_b)):
@@ -370,15 +392,18 @@ def _batch(As: Any, Bs: Any, mode: int) -> tuple[np.ndarray, np.ndarray]:
         kk = np.empty(len(R), np.int64)
         ss = np.empty(len(R), np.int64)
         inv = np.empty(n if need else 1)
-        code, q, v = K.prep(p, R.offsets, need, R.coords.dtype.kind in "iu", idx, kk, ss, inv)
+        off = np.ascontiguousarray(R.offsets, dtype=np.int64)
+        is_int = R.coords.dtype.kind in "iu"
+        code, q, v = _ext.coll_prep(p, off, is_int, mode, idx, kk, ss, inv, threads)
         if code == _OUT_OF_RANGE:
             prepared = None
             break
         if code:
             _raise(int(code), f"{nm}[{q}]" if many else nm, int(v))
-        prepared.append((p, R.offsets, idx, kk, ss, inv))
+        prepared.append((p, off, idx, kk, ss, inv))
     if prepared is None:
         # coordinates the kernels cannot take exactly: the exact path, pair by pair
+        res = np.zeros((P, 7))
         for q in range(P):
             a = RA[q if many_a else 0]
             b = RB[q if many_b else 0]
@@ -388,13 +413,13 @@ def _batch(As: Any, Bs: Any, mode: int) -> tuple[np.ndarray, np.ndarray]:
         return hit.astype(bool), res
     qa = np.arange(P, dtype=np.int64) if many_a else np.zeros(P, np.int64)
     qb = np.arange(P, dtype=np.int64) if many_b else np.zeros(P, np.int64)
-    r = K.pairs(*prepared[0], *prepared[1], qa, qb, mode, hit, res)
+    r = _ext.coll_pairs(*prepared[0], *prepared[1], qa, qb, mode, hit, res, threads)
     if r >= 0:  # pragma: no cover - guard
         _raise(-1, "", 0)
     return hit.astype(bool), res
 
 
-def intersects_many(As: Any, Bs: Any, *, method: str = "auto") -> np.ndarray:
+def intersects_many(As: Any, Bs: Any, *, method: str = "auto", threads: int = 1) -> np.ndarray:
     """:func:`intersects` for many pairs: pairwise, or one polygon against many.
 
     Parameters
@@ -404,6 +429,9 @@ def intersects_many(As: Any, Bs: Any, *, method: str = "auto") -> np.ndarray:
         Equal counts (pair k is ``As[k]``, ``Bs[k]``), or one side a single polygon.
     method : {"auto", "sum", "gjk"}, keyword-only
         As for :func:`intersects`.
+    threads : int, default 1, keyword-only
+        Split the pairs into this many contiguous chunks run in parallel (the GIL is
+        released); the result does not depend on it.
 
     Returns
     -------
@@ -419,12 +447,14 @@ def intersects_many(As: Any, Bs: Any, *, method: str = "auto") -> np.ndarray:
     """
     if method not in _METHODS:
         raise ValueError(f"method must be 'auto', 'sum' or 'gjk', not {method!r}")
-    hit, _ = _batch(As, Bs, _METHODS[method])
+    hit, _ = _batch(As, Bs, _METHODS[method], threads)
     return hit
 
 
-def distance_many(As: Any, Bs: Any) -> Distance:
+def distance_many(As: Any, Bs: Any, *, threads: int = 1) -> Distance:
     """:func:`distance` for many pairs (pairwise or one against many).
+
+    ``threads`` splits the pairs over that many threads, as in :func:`intersects_many`.
 
     Returns
     -------
@@ -439,12 +469,14 @@ def distance_many(As: Any, Bs: Any) -> Distance:
     >>> d.distance.tolist(), d.point_b.tolist()
     ([5.0, 2.0], [[3.0, 4.0], [0.0, 2.0]])
     """
-    hit, res = _batch(As, Bs, _DISTANCE)
+    hit, res = _batch(As, Bs, _DISTANCE, threads)
     return Distance(res[:, 0].copy(), res[:, 3:5].copy(), res[:, 5:7].copy())
 
 
-def penetration_many(As: Any, Bs: Any) -> Penetration:
+def penetration_many(As: Any, Bs: Any, *, threads: int = 1) -> Penetration:
     """:func:`penetration` for many pairs (pairwise or one against many).
+
+    ``threads`` splits the pairs over that many threads, as in :func:`intersects_many`.
 
     Returns
     -------
@@ -459,7 +491,7 @@ def penetration_many(As: Any, Bs: Any) -> Penetration:
     >>> mk.penetration_many(sq, [[(3, 1), (6, 1), (6, 3)], [(6, 0), (7, 0), (7, 1)]]).depth.tolist()
     [1.0, -2.0]
     """
-    hit, res = _batch(As, Bs, _PENETRATION)
+    hit, res = _batch(As, Bs, _PENETRATION, threads)
     return Penetration(res[:, 0].copy(), res[:, 1:3].copy(), res[:, 3:5].copy(), res[:, 5:7].copy())
 
 
@@ -516,11 +548,87 @@ def _unit(v: Any, L2: Any) -> float:
 
 
 def _py_norm(pts: list, name: str) -> tuple[list, int]:
-    from ._coerce import EXACT
-    from .convex import _py_normalize
+    """Normalize exact points (ints, Fractions): ``(vertices, split)`` as ``_ext``'s
+    normalization gives them; raises NotConvexError naming the caller's vertex."""
+    idx, split = _exact_normalize(pts, name)
+    return [pts[i] for i in idx], split
 
-    q, _, split = _py_normalize(pts, EXACT, name)
-    return q, split
+
+def _exact_normalize(pts: list, name: str) -> tuple[list, int]:
+    """Indices and split of the normalized polygon, through ``_ext.normalize_i``.
+
+    Normalization reads only coordinate comparisons and orientation signs, which a
+    translation and a positive scaling keep: the points become integer offsets from the
+    first one in units of the common denominator. Those fit the core's int64 path
+    (|x| < 2**62) unless the polygon's extent is beyond it; then the exact Python twin
+    of the core's algorithm (:func:`_exact_normalize_py`) decides."""
+    den = 1
+    for p in pts:
+        for v in p:
+            if type(v) is not int:
+                den = math.lcm(den, Fraction(v).denominator)
+    x0, y0 = pts[0]
+    rel = [(int((x - x0) * den), int((y - y0) * den)) for x, y in pts]
+    lim = _ext.INT_LIMIT
+    if all(-lim < v < lim for p in rel for v in p):
+        idx, split, code, v = _ext.normalize_i(np.array(rel, dtype=np.int64).reshape(-1, 2))
+        if code:
+            raise _not_convex(name, int(code), int(v))
+        return idx.tolist(), int(split)
+    return _exact_normalize_py(rel, name)
+
+
+def _exact_normalize_py(p: list, name: str) -> tuple[list, int]:
+    """mk::normalize's general pass (convex.hpp) in exact Python ints."""
+
+    def orient(i: int, j: int, k: int) -> int:
+        return _sg(_cr(_sub(p[j], p[i]), _sub(p[k], p[i])))
+
+    def low(i: int) -> tuple:
+        return (p[i][1], p[i][0])
+
+    keep: list[int] = []
+    for i in range(len(p)):
+        if not keep or p[i] != p[keep[-1]]:
+            keep.append(i)
+    while len(keep) > 1 and p[keep[-1]] == p[keep[0]]:
+        keep.pop()
+    m = len(keep)
+    if m == 1:
+        return keep, 1
+    b = min(range(m), key=lambda t: low(keep[t]))
+    turn = []
+    sg = 0
+    for t in range(m):
+        prv, cur, nxt = keep[(b + t - 1) % m], keep[(b + t) % m], keep[(b + t + 1) % m]
+        o = orient(prv, cur, nxt)
+        turn.append(o)
+        if o and sg and o != sg:
+            raise _not_convex(name, _ext.TURNS_BOTH_WAYS, cur)
+        sg = sg or o
+    if sg == 0:
+        return [keep[b], max(keep, key=low)], 1
+    out = []
+    for t in range(m):
+        tt = t if sg > 0 else (m - t) % m
+        cur = keep[(b + tt) % m]
+        if turn[tt] == 0:
+            prv, nxt = keep[(b + tt - 1) % m], keep[(b + tt + 1) % m]
+            if any(_sg(p[cur][c] - p[prv][c]) != _sg(p[nxt][c] - p[cur][c]) for c in (0, 1)):
+                raise _not_convex(name, _ext.SPIKE, cur)
+            continue
+        out.append(cur)
+    k = len(out)
+    split = k
+    for t in range(k):
+        i, j = out[t], out[(t + 1) % k]
+        up = low(j) > low(i)
+        if split == k:
+            if not up:
+                split = t
+        elif up:
+            raise _not_convex(name, _ext.WINDS_TWICE, i)
+    return out, split
 
 
 def _py_subedges(A: list, sa: int, B: list, sb: int) -> list:

@@ -1,9 +1,190 @@
-// collision.cpp -- intersects / distance / penetration walks, exact GJK, contains.
-// (Being ported from the numba kernels; bound into minkowski2d._core._ext.)
+// collision.cpp -- bindings of collision.hpp: intersects / distance / penetration walks,
+// exact GJK, contains, the batch over pairs (with threads). Outputs are numpy arrays the
+// caller preallocates (as the former numba kernels took them); every kernel runs with
+// the GIL released.
 #include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/tuple.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "collision.hpp"
 
 namespace nb = nanobind;
+using namespace nb::literals;
+using mk::i64;
 
 namespace mk_bind {
-void bind_collision(nb::module_& m) { (void)m; }
+
+namespace {
+
+template <class T>
+using CIn2 = nb::ndarray<const T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+template <class T>
+using CIn1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+template <class T>
+using W1 = nb::ndarray<T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+template <class T>
+using W2 = nb::ndarray<T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+void need(bool ok, const char* what) {
+  if (!ok) throw nb::value_error(what);
+}
+
+// prep(p, off, is_int, mode, idx, kk, ss, inv, threads) -> (code, polygon, vertex)
+nb::tuple prep_b(CIn2<double> p, CIn1<i64> off, bool is_int, int mode, W1<i64> idx,
+                 W1<i64> kk, W1<i64> ss, W1<double> inv, int threads) {
+  need(p.shape(1) == 2, "prep: p must have shape (n, 2)");
+  i64 P = (i64)off.shape(0) - 1;
+  i64 n = (i64)p.shape(0);
+  need(P >= 0 && (i64)kk.shape(0) >= P && (i64)ss.shape(0) >= P, "prep: bad sizes");
+  need((i64)idx.shape(0) >= n, "prep: idx too short");
+  need(mode != mk::coll::PENETRATION || (i64)inv.shape(0) >= n, "prep: inv too short");
+  const i64* o = off.data();
+  for (i64 q = 0; q < P; ++q) need(o[q] >= 0 && o[q] <= o[q + 1] && o[q + 1] <= n, "prep: bad offsets");
+  mk::coll::PrepResult r;
+  {
+    nb::gil_scoped_release nogil;
+    r = mk::coll::prep(p.data(), n, o, P, is_int, mode, idx.data(), kk.data(), ss.data(),
+                       inv.data(), threads < 1 ? 1 : threads);
+  }
+  return nb::make_tuple(r.code, r.q, r.v);
+}
+
+// pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode, hit, res,
+//       threads) -> first pair where GJK hit its cap, or -1
+i64 pairs_b(CIn2<double> pa, CIn1<i64> offa, CIn1<i64> ida, CIn1<i64> ka, CIn1<i64> sa,
+            CIn1<double> inva, CIn2<double> pb, CIn1<i64> offb, CIn1<i64> idb, CIn1<i64> kb,
+            CIn1<i64> sb, CIn1<double> invb, CIn1<i64> qa, CIn1<i64> qb, int mode,
+            W1<std::int8_t> hit, W2<double> res, int threads) {
+  i64 P = (i64)qa.shape(0);
+  need((i64)qb.shape(0) == P && (i64)hit.shape(0) >= P, "pairs: bad sizes");
+  bool rows = mode == mk::coll::DISTANCE || mode == mk::coll::PENETRATION;
+  need(!rows || ((i64)res.shape(0) >= P && res.shape(1) == mk::coll::NCOL), "pairs: bad res");
+  i64 NA = (i64)ka.shape(0), NB = (i64)kb.shape(0);
+  const i64* qa_ = qa.data();
+  const i64* qb_ = qb.data();
+  for (i64 q = 0; q < P; ++q)
+    need(qa_[q] >= 0 && qa_[q] < NA && qb_[q] >= 0 && qb_[q] < NB, "pairs: bad pair index");
+  mk::coll::Side A{pa.data(), offa.data(), ida.data(), ka.data(), sa.data(), inva.data()};
+  mk::coll::Side B{pb.data(), offb.data(), idb.data(), kb.data(), sb.data(), invb.data()};
+  i64 r;
+  {
+    nb::gil_scoped_release nogil;
+    r = mk::coll::pairs(A, B, qa_, qb_, P, mode, hit.data(), res.data(), threads < 1 ? 1 : threads);
+  }
+  return r;
+}
+
+// single(pa, pb, mode, int_a, int_b, res (1, 7)) -> (code, which, vertex, hit): code 0 on
+// success, else a Status or OUT_OF_RANGE for operand `which` (0 = a, 1 = b) at `vertex`;
+// GJK's cap gives code -1.
+nb::tuple single_b(CIn2<double> pa, CIn2<double> pb, int mode, bool int_a, bool int_b,
+                   W2<double> res) {
+  need(pa.shape(1) == 2 && pb.shape(1) == 2, "single: shape (n, 2) expected");
+  need(res.shape(0) >= 1 && res.shape(1) == mk::coll::NCOL, "single: res must be (1, 7)");
+  i64 na = (i64)pa.shape(0), nb_ = (i64)pb.shape(0);
+  int code = 0, which = 0, hit = 0;
+  i64 vertex = 0;
+  {
+    nb::gil_scoped_release nogil;
+    i64 offa[2] = {0, na}, offb[2] = {0, nb_};
+    std::vector<i64> ida(na > 0 ? na : 1), idb(nb_ > 0 ? nb_ : 1);
+    bool need_len = mode == mk::coll::PENETRATION;
+    std::vector<double> inva(need_len ? na : 1), invb(need_len ? nb_ : 1);
+    i64 ka, kb, sa, sb;
+    mk::coll::PrepResult r = mk::coll::prep(pa.data(), na, offa, 1, int_a, mode, ida.data(), &ka,
+                                            &sa, inva.data());
+    if (r.code) {
+      code = r.code;
+      vertex = r.v;
+    } else {
+      r = mk::coll::prep(pb.data(), nb_, offb, 1, int_b, mode, idb.data(), &kb, &sb, invb.data());
+      if (r.code) {
+        code = r.code;
+        which = 1;
+        vertex = r.v;
+      } else {
+        mk::coll::Side A{pa.data(), offa, ida.data(), &ka, &sa, inva.data()};
+        mk::coll::Side B{pb.data(), offb, idb.data(), &kb, &sb, invb.data()};
+        i64 q0 = 0;
+        std::int8_t h = 0;
+        i64 g = mk::coll::pairs(A, B, &q0, &q0, 1, mode, &h, res.data(), 1);
+        if (g >= 0)
+          code = -1;
+        else
+          hit = h;
+      }
+    }
+  }
+  return nb::make_tuple(code, which, vertex, hit);
+}
+
+// contains_single(p, int_p, pts, int_pts, out) -> (code, which, vertex): which 0 = poly,
+// 1 = points.
+nb::tuple contains_single_b(CIn2<double> p, bool int_p, CIn2<double> pts, bool int_pts,
+                            W1<bool> out) {
+  need(p.shape(1) == 2 && pts.shape(1) == 2, "contains: shape (n, 2) expected");
+  need(out.shape(0) >= pts.shape(0), "contains: out too short");
+  i64 n = (i64)p.shape(0), m = (i64)pts.shape(0);
+  int code = 0, which = 0;
+  i64 vertex = 0;
+  {
+    nb::gil_scoped_release nogil;
+    i64 off[2] = {0, n};
+    std::vector<i64> ix(n > 0 ? n : 1);
+    i64 kk, ss;
+    double inv;
+    mk::coll::PrepResult r =
+        mk::coll::prep(p.data(), n, off, 1, int_p, mk::coll::INTERSECTS, ix.data(), &kk, &ss, &inv);
+    if (r.code) {
+      code = r.code;
+      vertex = r.v;
+    } else {
+      i64 bad = mk::coll::out_of_range(pts.data(), 0, m, int_pts, false);
+      i64 badf = -1;
+      for (i64 t = 0; t < 2 * m && badf < 0; ++t)
+        if (!(pts.data()[t] - pts.data()[t] == 0.0)) badf = t / 2;
+      if (bad >= 0) {
+        code = mk::coll::OUT_OF_RANGE;
+        which = 1;
+        vertex = bad;
+      } else if (badf >= 0) {
+        code = mk::NONFINITE;
+        which = 1;
+        vertex = badf;
+      } else {
+        mk::coll::contains_points(p.data(), ix.data(), kk, pts.data(), m, out.data());
+      }
+    }
+  }
+  return nb::make_tuple(code, which, vertex);
+}
+
+}  // namespace
+
+void bind_collision(nb::module_& m) {
+  m.attr("COLL_INTERSECTS") = (int)mk::coll::INTERSECTS;
+  m.attr("COLL_DISTANCE") = (int)mk::coll::DISTANCE;
+  m.attr("COLL_PENETRATION") = (int)mk::coll::PENETRATION;
+  m.attr("COLL_GJK") = (int)mk::coll::GJK;
+  m.attr("COLL_AUTO") = (int)mk::coll::AUTO;
+  m.attr("COLL_AUTO_SUM_MAX") = (long long)mk::coll::AUTO_SUM_MAX;
+  m.attr("COLL_OUT_OF_RANGE") = (int)mk::coll::OUT_OF_RANGE;
+  m.def("coll_prep", &prep_b, "p"_a.noconvert(), "off"_a.noconvert(), "is_int"_a, "mode"_a,
+        "idx"_a.noconvert(), "kk"_a.noconvert(), "ss"_a.noconvert(), "inv"_a.noconvert(),
+        "threads"_a = 1, "Normalize every polygon of a ragged float64 array for the collision kernels.");
+  m.def("coll_pairs", &pairs_b, "pa"_a.noconvert(), "offa"_a.noconvert(), "ida"_a.noconvert(),
+        "ka"_a.noconvert(), "sa"_a.noconvert(), "inva"_a.noconvert(), "pb"_a.noconvert(),
+        "offb"_a.noconvert(), "idb"_a.noconvert(), "kb"_a.noconvert(), "sb"_a.noconvert(),
+        "invb"_a.noconvert(), "qa"_a.noconvert(), "qb"_a.noconvert(), "mode"_a,
+        "hit"_a.noconvert(), "res"_a.noconvert(), "threads"_a = 1,
+        "Run a collision mode on every pair of two prepared ragged arrays.");
+  m.def("coll_single", &single_b, "pa"_a.noconvert(), "pb"_a.noconvert(), "mode"_a, "int_a"_a,
+        "int_b"_a, "res"_a.noconvert(), "One pair: prepare both, then run the mode.");
+  m.def("coll_contains", &contains_single_b, "p"_a.noconvert(), "int_p"_a, "pts"_a.noconvert(),
+        "int_pts"_a, "out"_a.noconvert(), "Point location in one convex polygon.");
+}
+
 }  // namespace mk_bind
