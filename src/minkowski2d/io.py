@@ -150,7 +150,7 @@ def read_geometry(source: str | Path) -> Any:
     path, sel = split_selector(s)
     if path.endswith(".dat"):
         items = read_cgal_dat(path)
-        if sel:
+        if path != s:  # a selector, even an empty one
             if not (sel.isascii() and sel.isdigit()) or not 1 <= int(sel) <= len(items):
                 raise InputFormatError(
                     f"{s}: the file holds {len(items)} polygon(s); use #1..#{len(items)}",
@@ -379,7 +379,10 @@ def _cgal_number(tok: str) -> int | float | Fraction:
     Raises ``ValueError`` with the reason for anything else.
     """
     if _INT_TOKEN.match(tok):
-        return int(tok)  # ValueError beyond Python's digit limit
+        try:
+            return int(tok)
+        except ValueError:  # beyond Python's digit limit
+            raise ValueError("an integer with too many digits") from None
     m = _RATIONAL_TOKEN.match(tok)
     if m:
         q = int(m.group(2))

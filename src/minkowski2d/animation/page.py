@@ -80,6 +80,8 @@ def _number(tok: str, name: str, k: int) -> Any:
             if tok.lstrip("+-").isdigit():
                 raise
             return float(tok)
+    except ShapeError:
+        raise
     except ValueError:
         raise ShapeError(
             f"{name}: cannot read the number {tok[:30]!r} (vertex {k}); a fraction is p/q "
