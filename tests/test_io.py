@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -24,7 +23,8 @@ from minkowski2d.io import (
     read_geometry,
 )
 
-DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "cgal-minkowski"
+from .corpus import CORPUS as DATA
+from .corpus import requires_corpus
 
 
 def test_json_points_keep_ints_exact():
@@ -89,9 +89,7 @@ def test_cgal_formats():
         parse_cgal_dat("4 0 0 1 0")
 
 
-@pytest.mark.skipif(
-    not DATA.is_dir(), reason="../shared/data/cgal-minkowski is not beside the repo"
-)
+@requires_corpus
 def test_every_shared_cgal_file_parses():
     files = sorted(DATA.glob("*.dat"))
     assert len(files) >= 40
@@ -133,9 +131,7 @@ def test_shapely_output_keeps_full_precision():
         assert back.tolist() == [[0.0, 0.0], [1 / 3, 0.0], [0.0, 2 / 3]]
 
 
-@pytest.mark.skipif(
-    not DATA.is_dir(), reason="../shared/data/cgal-minkowski is not beside the repo"
-)
+@requires_corpus
 def test_two_polygon_dat_needs_a_selector():
     with pytest.raises(InputFormatError, match=r"holds 2 polygons; name one as .*comb.dat#1"):
         read_geometry(DATA / "comb.dat")
