@@ -200,7 +200,8 @@ def parse_geometry(text: str, name: str = "input") -> Any:
     import shapely
 
     try:
-        geom = shapely.from_wkt(s)
+        with np.errstate(all="ignore"):  # 1e999 overflows quietly to inf (rejected later)
+            geom = shapely.from_wkt(s)
     except Exception:  # shapely raises its own GEOSException subclasses
         geom = None
     if geom is None:
