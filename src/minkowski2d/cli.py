@@ -3,9 +3,12 @@
 Subcommands: ``demo``, ``sum``, ``inflate``, ``hull``, and those that feature modules
 register through ``add_parser(subparsers)`` (animation, collision, general sums).
 
-Bad input prints one line, ``minkowski2d: error: <what and where>``, on standard error
-and exits with status 2; no output file is written then, and an output path that names
-one of the input files is refused.
+Bad input prints one line, ``minkowski2d: error: <what and where> (hint: ...)``, on
+standard error (built from the error's fields, :func:`._cli_common.format_error`) and
+exits with status 2; no output file is written then. Every command writes through
+:func:`._cli_common.write_output`: an output that is one of the inputs (same device and
+inode, ``.dat#k`` selectors stripped) or a directory is refused, and the text goes to a
+unique ``O_EXCL`` temporary file renamed into place, removed on every error path.
 """
 
 from __future__ import annotations
