@@ -371,7 +371,10 @@ def _intify(c: np.ndarray) -> np.ndarray:
 _INT_TOKEN = re.compile(r"[+-]?\d+\Z", re.ASCII)
 _RATIONAL_TOKEN = re.compile(r"([+-]?\d+)/([+-]?\d+)\Z", re.ASCII)
 _DECIMAL_TOKEN = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\Z", re.ASCII)
-_CGAL_HINT = "a CGAL .dat file is: N, then N vertices 'x y' (ints, p/q or decimals), ..."
+_CGAL_HINT = (
+    "a CGAL .dat file holds N and N vertices x y (ints, p/q or decimals), then nothing, "
+    "a second polygon, or H and H holes"
+)
 
 
 def _cgal_number(tok: str) -> int | float | Fraction:
