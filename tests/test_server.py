@@ -91,6 +91,8 @@ class TestLocalServer:
             (b"[1, 2]", 400, "JSON object"),
             (b'{"a": 5, "b": "0 0"}', 400, "A: expected text"),
             (b'{"a": "0 0", "b": {"x": 1}}', 400, "B: expected text"),
+            (b'{"a": {"type": "Polygon"}, "b": "0 0"}', 400, "A: expected text"),
+            (b'{"a": "0 0", "b": "0 0", "robot": 7}', 400, "robot: expected text"),
             (b'{"a": "{\\"type\\": \\"Polygon\\"}", "b": "0 0"}', 200, "without coordinates"),
             (
                 b'{"a": "{\\"type\\": \\"Polygon\\", \\"coordinates\\": []}", "b": "0 0"}',
