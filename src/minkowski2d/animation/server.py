@@ -38,6 +38,7 @@ MAX_BODY = 1 << 20  # bytes
 WORKERS = 8  # requests handled at once
 BACKLOG = 128  # connections the kernel queues while every worker is busy
 TIMEOUT = 10.0  # seconds a connection may stay silent (headers, body, keep-alive)
+_DRAIN_LIMIT = 16 * MAX_BODY  # an oversized body up to this is read (and dropped) for the 413
 
 
 class RequestError(Exception):
@@ -219,6 +220,20 @@ class _Handler(BaseHTTPRequestHandler):
             return
         self._send(HTTPStatus.OK, text.encode(), "application/json")
 
+    def _drain(self, n: int) -> None:
+        """Read and drop a body somewhat over the cap, so that the client, still sending,
+        can read the 413 (a larger one is not read: the connection is closed)."""
+        if n > _DRAIN_LIMIT:
+            return
+        try:
+            while n > 0:
+                chunk = self.rfile.read(min(n, 1 << 16))
+                if not chunk:
+                    return
+                n -= len(chunk)
+        except OSError:
+            return
+
     def _read_request(self) -> Any:
         """The JSON body of a well-formed API request, or a RequestError."""
         if not self._host_ok():
@@ -241,6 +256,7 @@ class _Handler(BaseHTTPRequestHandler):
             raise RequestError(HTTPStatus.LENGTH_REQUIRED, "Content-Length required")
         n = int(raw_len)
         if n > MAX_BODY:
+            self._drain(n)
             raise RequestError(
                 HTTPStatus.REQUEST_ENTITY_TOO_LARGE,
                 f"request too large ({n} bytes; at most {MAX_BODY})",
