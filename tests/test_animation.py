@@ -196,14 +196,17 @@ def test_server_api(server):
     expected = mk.minkowski_sum([(0, 0), (4, 0), (0, 4)], [(0, 0), (1, 1)])
     assert d["trace"]["result"] == expected.tolist()
 
+    # errors are the GeometryError's fields (to_dict), which the page shows
     st, body = _post(server, json.dumps({"a": "0 0, 2 0, 1 1, 2 2, 0 2", "b": "0 0"}).encode())
-    assert st == 200 and json.loads(body)["error"].startswith("A: not convex")
+    err = json.loads(body)["error"]
+    assert st == 200 and err["message"].startswith("A: not convex")
+    assert err["type"] == "NotConvexError" and err["argument"] == "A" and err["vertex"] == 2
     st, body = _post(server, json.dumps({"a": "nan 0, 1 1", "b": "0 0"}).encode())
-    assert "non-finite" in json.loads(body)["error"]
+    assert "non-finite" in json.loads(body)["error"]["message"]
     st, body = _post(server, json.dumps({"a": "", "b": "0 0"}).encode())
-    assert json.loads(body)["error"] == "A: empty input (no vertices)"
+    assert json.loads(body)["error"]["message"] == "A: empty input (no vertices)"
     st, body = _post(server, b"{not json")
-    assert st == 400
+    assert st == 400 and "not valid JSON" in json.loads(body)["error"]["message"]
     st, body = _post(server, b"{}", host="evil.example")
     assert st == 421
     st, body = _post(server, b"{}", path="/other")

@@ -4,8 +4,11 @@ from __future__ import annotations
 
 import io
 import json
+import os
+import stat
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -109,3 +112,151 @@ def test_unwritable_output_is_one_line(capsys, files, tmp_path):
     assert rc == 2 and err.count("\n") == 1 and "No such file or directory" in err
     rc, _, err = run(["demo", "-o", str(tmp_path / "no" / "dir" / "a.html")], capsys)
     assert rc == 2 and err.startswith("minkowski2d: error: ")
+
+
+# --------------------------------------------------------------------------------------
+# issue 9: "Files a user can lose"
+
+SQUARE = "[[0, 0], [4, 0], [4, 4], [0, 4]]"
+UNIT = "[[0, 0], [1, 0], [1, 1], [0, 1]]"
+
+
+def _commands(a, b):
+    """Every command that writes a file, with its inputs (the output is added after)."""
+    return [
+        ["sum", a, b],
+        ["inflate", a, b],
+        ["hull", a],
+        ["collide", a, b],
+        ["sum-general", a, b],
+        ["erode", a, b],
+        ["decompose", a],
+        ["animate", a, b],
+    ]
+
+
+def _listing(d):
+    return sorted(p.name for p in d.iterdir())
+
+
+class TestFilesAUserCanLose:
+    """Outputs go through one O_EXCL temporary file renamed into place; inputs are
+    compared with the output by device and inode, selectors stripped."""
+
+    def test_dat_selector_output_guard(self, capsys, tmp_path):
+        two = tmp_path / "two.dat"
+        text = "4 0 0 2 0 2 2 0 2\n3 0 0 1 0 0 1\n"
+        two.write_text(text)
+        rc, _, err = run(["sum", f"{two}#1", f"{two}#2", "-o", str(two)], capsys)
+        assert rc == 2 and "refusing to overwrite the input file" in err
+        assert two.read_text() == text and _listing(tmp_path) == ["two.dat"]
+        # the same file named another way: ./, a symlink, a hard link
+        (tmp_path / "link.dat").symlink_to(two)
+        os.link(two, tmp_path / "hard.dat")
+        for out in (tmp_path / "." / "two.dat", tmp_path / "link.dat", tmp_path / "hard.dat"):
+            rc, _, err = run(["sum", f"{two}#1", f"{two}#2", "-o", str(out)], capsys)
+            assert rc == 2 and "refusing" in err, out
+        assert two.read_text() == text
+        rc, out, _ = run(["sum", f"{two}#1", f"{two}#2"], capsys)
+        assert rc == 0 and json.loads(out)
+
+    @pytest.mark.parametrize("cmd", range(8))
+    def test_every_command_refuses_to_overwrite_an_input(self, capsys, tmp_path, cmd):
+        a, b = tmp_path / "a.json", tmp_path / "b.json"
+        a.write_text(SQUARE)
+        b.write_text(UNIT)
+        argv = _commands(str(a), str(b))[cmd]
+        rc, _, err = run([*argv, "-o", str(argv[-1])], capsys)
+        assert rc == 2 and "refusing to overwrite the input file" in err, argv
+        assert a.read_text() == SQUARE and b.read_text() == UNIT
+        assert _listing(tmp_path) == ["a.json", "b.json"]
+
+    @pytest.mark.parametrize("cmd", range(8))
+    def test_an_existing_tmp_name_is_never_opened(self, capsys, tmp_path, cmd):
+        a, b = tmp_path / "a.json", tmp_path / "b.json"
+        a.write_text(SQUARE)
+        b.write_text(UNIT)
+        # an input named like the old fixed temporary file, and a planted symlink
+        (tmp_path / "res.json.tmp").write_text("precious")
+        victim = tmp_path / "victim.json"
+        victim.write_text("victim")
+        (tmp_path / "out.json.tmp").symlink_to(victim)
+        argv = _commands(str(a), str(b))[cmd]
+        for out in ("res.json", "out.json"):
+            rc, _, err = run([*argv, "-o", str(tmp_path / out)], capsys)
+            assert rc == 0, err
+            assert (tmp_path / out).stat().st_size > 0
+        assert (tmp_path / "res.json.tmp").read_text() == "precious"
+        assert victim.read_text() == "victim"
+        assert _listing(tmp_path) == sorted(
+            [
+                "a.json",
+                "b.json",
+                "res.json",
+                "res.json.tmp",
+                "out.json",
+                "out.json.tmp",
+                "victim.json",
+            ]
+        )
+
+    @pytest.mark.parametrize("cmd", [*range(8), "demo"])
+    def test_a_directory_output_leaves_nothing_behind(self, capsys, tmp_path, cmd):
+        a, b = tmp_path / "a.json", tmp_path / "b.json"
+        a.write_text(SQUARE)
+        b.write_text(UNIT)
+        adir = tmp_path / "adir"
+        adir.mkdir()
+        argv = ["demo"] if cmd == "demo" else _commands(str(a), str(b))[cmd]
+        rc, _, err = run([*argv, "-o", str(adir)], capsys)
+        assert rc == 2 and err.count("\n") == 1
+        assert "it is a directory" in err
+        assert _listing(tmp_path) == ["a.json", "adir", "b.json"] and _listing(adir) == []
+
+    def test_failures_while_writing_remove_the_temporary_file(
+        self, capsys, files, tmp_path, monkeypatch
+    ):
+        a, b = files
+        out = tmp_path / "out.json"
+        out.write_text("old")
+        before = _listing(tmp_path)
+
+        def boom(*_args, **_kw):
+            raise OSError(28, "No space left on device")
+
+        monkeypatch.setattr(os, "replace", boom)
+        rc, _, err = run(["sum", str(a), str(b), "-o", str(out)], capsys)
+        assert rc == 2 and "cannot write" in err and "No space left" in err
+        assert out.read_text() == "old" and _listing(tmp_path) == before
+
+        def interrupt(*_args, **_kw):
+            raise KeyboardInterrupt
+
+        monkeypatch.setattr(os, "replace", interrupt)
+        rc, _, _ = run(["sum", str(a), str(b), "-o", str(out)], capsys)
+        assert rc == 130 and out.read_text() == "old" and _listing(tmp_path) == before
+
+    def test_output_file_mode_and_content(self, capsys, files, tmp_path):
+        a, b = files
+        out = tmp_path / "out.wkt"
+        old = os.umask(0o022)
+        try:
+            rc, _, _ = run(["sum", str(a), str(b), "-o", str(out)], capsys)
+        finally:
+            os.umask(old)
+        assert rc == 0 and out.read_text() == "POLYGON ((0 0, 3 0, 3 1, 1 3, 0 3, 0 0))\n"
+        assert stat.S_IMODE(out.stat().st_mode) == 0o644
+        out.chmod(0o600)  # an existing output keeps its mode
+        rc, _, _ = run(["sum", str(a), str(b), "-o", str(out)], capsys)
+        assert rc == 0 and stat.S_IMODE(out.stat().st_mode) == 0o600
+
+    def test_a_device_is_refused(self, capsys, files):
+        a, b = files
+        rc, _, err = run(["sum", str(a), str(b), "-o", os.devnull], capsys)
+        assert rc == 2 and "not a regular file" in err and "-o -" in err
+
+    def test_plugins_do_not_import_cli(self):
+        root = Path(__file__).resolve().parents[1] / "src" / "minkowski2d"
+        for f in ("_cli_collision.py", "_cli_general.py", "animation/cli.py"):
+            text = (root / f).read_text()
+            assert "from .cli import" not in text and "from ..cli import" not in text, f

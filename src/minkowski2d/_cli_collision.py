@@ -43,12 +43,16 @@ def _convex_input(g: Any, name: str) -> Any:
     from .errors import NotConvexError
 
     if not isinstance(g, np.ndarray):
-        raise NotConvexError(f"{name}: not a single convex polygon (holes or several parts)")
+        raise NotConvexError(
+            f"{name}: not a single convex polygon (holes or several parts)",
+            argument=name,
+            hint="use sum-general for polygons with holes",
+        )
     return g
 
 
 def _cmd_collide(args: argparse.Namespace) -> int:
-    from .cli import emit
+    from ._cli_common import CLI_HULL_HINT, emit, renamed_error
     from .collision import distance, intersects, penetration
     from .errors import NotConvexError
     from .io import read_geometry
@@ -61,11 +65,7 @@ def _cmd_collide(args: argparse.Namespace) -> int:
         p = penetration(a, b, hull=args.hull)
     except NotConvexError as exc:
         # name the file and the option rather than the Python argument
-        msg = str(exc).replace("pass hull=True", "use --hull")
-        for arg, path in (("a", args.a), ("b", args.b)):
-            if msg.startswith(f"{arg}: "):
-                msg = f"{path}: " + msg[len(arg) + 2 :]
-        raise NotConvexError(msg, exc.vertex) from None
+        raise renamed_error(exc, {"a": args.a, "b": args.b}, hull_hint=CLI_HULL_HINT) from None
     out = {
         "intersects": hit,
         "distance": {

@@ -11,7 +11,7 @@ import sys
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
     """Add the ``sum-general``, ``erode`` and ``decompose`` subcommands."""
-    from .cli import _add_io_options
+    from ._cli_common import add_io_options
     from .general import DECOMPOSITIONS, SUM_METHODS
 
     p = subparsers.add_parser(
@@ -28,7 +28,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         default="hertel-mehlhorn",
         help="convex pieces for --method decomposition",
     )
-    _add_io_options(p)
+    add_io_options(p)
     p.set_defaults(func=_cmd_sum_general)
 
     p = subparsers.add_parser(
@@ -40,7 +40,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     )
     p.add_argument("a", help="polygon A, the region (file or -)")
     p.add_argument("b", help="polygon B, the shape that must fit (file or -)")
-    _add_io_options(p)
+    add_io_options(p)
     p.set_defaults(func=_cmd_erode)
 
     p = subparsers.add_parser(
@@ -50,12 +50,12 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     )
     p.add_argument("polygon", help="the polygon (file or -)")
     p.add_argument("--method", choices=DECOMPOSITIONS, default="hertel-mehlhorn")
-    _add_io_options(p)
+    add_io_options(p)
     p.set_defaults(func=_cmd_decompose)
 
 
 def _cmd_sum_general(args: argparse.Namespace) -> int:
-    from .cli import emit, output_format
+    from ._cli_common import emit, output_format
     from .general import minkowski_sum_general
     from .io import format_geometry, read_geometry
 
@@ -67,7 +67,7 @@ def _cmd_sum_general(args: argparse.Namespace) -> int:
 
 
 def _cmd_erode(args: argparse.Namespace) -> int:
-    from .cli import emit, output_format
+    from ._cli_common import emit, output_format
     from .general import minkowski_difference
     from .io import format_geometry, read_geometry
 
@@ -83,7 +83,7 @@ def _cmd_erode(args: argparse.Namespace) -> int:
 def _cmd_decompose(args: argparse.Namespace) -> int:
     import shapely
 
-    from .cli import emit, output_format
+    from ._cli_common import emit, output_format
     from .general import convex_decomposition
     from .io import format_geometry, read_geometry
 

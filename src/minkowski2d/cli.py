@@ -3,22 +3,28 @@
 Subcommands: ``demo``, ``sum``, ``inflate``, ``hull``, and those that feature modules
 register through ``add_parser(subparsers)`` (animation, collision, general sums).
 
-Bad input prints one line, ``minkowski2d: error: <what and where>``, on standard error
-and exits with status 2; no output file is written then, and an output path that names
-one of the input files is refused.
+Bad input prints one line, ``minkowski2d: error: <what and where> (hint: ...)``, on
+standard error (built from the error's fields, :func:`._cli_common.format_error`) and
+exits with status 2; no output file is written then. Every command writes through
+:func:`._cli_common.write_output`: an output that is one of the inputs (same device and
+inode, ``.dat#k`` selectors stripped) or a directory is refused, and the text goes to a
+unique ``O_EXCL`` temporary file renamed into place, removed on every error path.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
-import os
 import sys
 from collections.abc import Sequence
-from pathlib import Path
 from typing import Any
 
-__all__ = ["main", "emit", "build_parser"]
+from ._cli_common import CLIError, add_io_options, emit, format_error, output_format
+
+__all__ = ["main", "emit", "build_parser", "CLIError", "output_format"]
+
+# kept for code that imported the old private name from here
+_add_io_options = add_io_options
 
 _PLUGINS = (
     "minkowski2d.animation.cli",
@@ -28,48 +34,6 @@ _PLUGINS = (
 
 SEED_A = [(0, 0), (2, 0), (0, 2)]
 SEED_B = [(0, 0), (1, 0), (1, 1), (0, 1)]
-
-
-class CLIError(Exception):
-    """A usage problem reported as one line (exit status 2)."""
-
-
-def emit(text: str, output: str | None, inputs: Sequence[str] = ()) -> None:
-    """Write ``text`` to standard output, or to the file ``output``.
-
-    Refuses (``CLIError``) to write over any of ``inputs``; writes the file only once the
-    whole text exists, through a temporary file renamed into place.
-    """
-    if output in (None, "-"):
-        sys.stdout.write(text if text.endswith("\n") else text + "\n")
-        return
-    out = Path(output)
-    for src in inputs:
-        if src != "-" and Path(src).exists() and out.exists() and os.path.samefile(src, out):
-            raise CLIError(f"refusing to overwrite the input file {src}")
-    tmp = out.with_name(out.name + ".tmp")
-    tmp.write_text(text if text.endswith("\n") else text + "\n")
-    os.replace(tmp, out)
-
-
-def _add_io_options(p: argparse.ArgumentParser) -> None:
-    from .io import FORMATS
-
-    p.add_argument("-o", "--output", help="output file (default: standard output)")
-    p.add_argument(
-        "--format",
-        choices=FORMATS,
-        default=None,
-        help="output format (default: from the -o suffix, else json)",
-    )
-
-
-def output_format(args: argparse.Namespace) -> str:
-    """The chosen format, or the one the output suffix names, or json."""
-    if args.format:
-        return args.format
-    suffix = Path(args.output).suffix.lower() if args.output else ""
-    return {".wkt": "wkt", ".geojson": "geojson", ".svg": "svg"}.get(suffix, "json")
 
 
 def _is_general(g: Any, name: str) -> bool:
@@ -84,6 +48,7 @@ def _is_general(g: Any, name: str) -> bool:
 
 
 def _cmd_demo(args: argparse.Namespace) -> int:
+    from ._cli_common import write_output
     from .convex import minkowski_sum
 
     s = minkowski_sum(SEED_A, SEED_B)
@@ -91,11 +56,11 @@ def _cmd_demo(args: argparse.Namespace) -> int:
     print("B (square):  ", [list(p) for p in SEED_B])
     print("A ⊕ B:       ", s.tolist())
     try:
-        from .animation import write_demo_page
+        from .animation.page import DEMO_TITLE, render
     except ImportError:
         return 0
-    path = write_demo_page(Path(args.output or "animation.html"))
-    print(f"animation:    {Path(path).resolve()}")
+    path = write_output(render(SEED_A, SEED_B, title=DEMO_TITLE), args.output or "animation.html")
+    print(f"animation:    {path.resolve()}")
     return 0
 
 
@@ -166,19 +131,19 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("a", help="polygon A (file or -)")
     p.add_argument("b", help="polygon B (file or -)")
     p.add_argument("--hull", action="store_true", help="use the convex hulls of the inputs")
-    _add_io_options(p)
+    add_io_options(p)
     p.set_defaults(func=_cmd_sum)
 
     p = sub.add_parser("inflate", help="configuration-space obstacle: obstacle ⊕ (−robot)")
     p.add_argument("obstacle", help="obstacle polygon (file or -)")
     p.add_argument("robot", help="robot polygon, reference point at its origin (file or -)")
     p.add_argument("--hull", action="store_true", help="use the convex hulls of the inputs")
-    _add_io_options(p)
+    add_io_options(p)
     p.set_defaults(func=_cmd_inflate)
 
     p = sub.add_parser("hull", help="convex hull of a point set")
     p.add_argument("points", help="points (file or -)")
-    _add_io_options(p)
+    add_io_options(p)
     p.set_defaults(func=_cmd_hull)
 
     for name in _PLUGINS:
@@ -210,17 +175,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     try:
         return int(args.func(args) or 0)
-    except (GeometryError, CLIError) as exc:
-        print(f"minkowski2d: error: {exc}", file=sys.stderr)
-        return 2
-    except OSError as exc:  # e.g. an output directory that does not exist
-        where = f": {exc.filename}" if getattr(exc, "filename", None) else ""
-        print(f"minkowski2d: error: {exc.strerror or exc}{where}", file=sys.stderr)
+    except BrokenPipeError:
+        return 0
+    except (GeometryError, CLIError, OSError) as exc:  # OSError: e.g. an unreadable stdin
+        print(format_error(exc), file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         return 130
-    except BrokenPipeError:
-        return 0
 
 
 if __name__ == "__main__":  # pragma: no cover

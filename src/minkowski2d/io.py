@@ -17,6 +17,9 @@ Examples
 from __future__ import annotations
 
 import json
+import math
+import re
+import reprlib
 import sys
 from fractions import Fraction
 from pathlib import Path
@@ -24,7 +27,12 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from .errors import EmptyGeometryError, InputFormatError, ShapeError
+from .errors import (
+    EmptyGeometryError,
+    InputFormatError,
+    OverflowGeometryError,
+    ShapeError,
+)
 
 __all__ = [
     "read_geometry",
@@ -32,6 +40,7 @@ __all__ = [
     "read_cgal_dat",
     "parse_cgal_dat",
     "UnboundedPolygon",
+    "split_selector",
     "format_geometry",
     "FORMATS",
 ]
@@ -49,14 +58,73 @@ class UnboundedPolygon(NamedTuple):
 
 
 def _read_text(source: str | Path) -> str:
-    if str(source) == "-":
-        return sys.stdin.read()
+    """The text of a file (UTF-8, a leading byte-order mark dropped) or of standard input.
+
+    Every failure is an :class:`InputFormatError` naming the file: missing, unreadable,
+    a directory, a name the system cannot take, or bytes that are not UTF-8 text.
+    """
+    name = str(source)
+    hint = "give a JSON, GeoJSON, WKT or CGAL .dat text file"
+    if name == "-":
+        try:
+            return sys.stdin.read()
+        except UnicodeDecodeError as exc:
+            raise InputFormatError(
+                f"-: standard input is not UTF-8 text (byte {exc.start})",
+                argument="-",
+                hint=hint,
+            ) from None
     try:
-        return Path(source).read_text()
+        data = Path(source).read_bytes()
     except FileNotFoundError:
-        raise InputFormatError(f"{source}: no such file") from None
+        raise InputFormatError(f"{name}: no such file", argument=name) from None
+    except IsADirectoryError:
+        raise InputFormatError(f"{name}: is a directory, not a file", argument=name) from None
     except OSError as exc:
-        raise InputFormatError(f"{source}: cannot read ({exc.strerror})") from None
+        raise InputFormatError(
+            f"{name}: cannot read ({exc.strerror or exc})", argument=name
+        ) from None
+    except ValueError as exc:  # e.g. an embedded NUL byte in the name
+        raise InputFormatError(f"{_short(name)}: not a usable file name ({exc})") from None
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise InputFormatError(
+            f"{name}: not a text file (byte {exc.start} is not UTF-8)", argument=name, hint=hint
+        ) from None
+
+
+_REPR = reprlib.Repr()
+_REPR.maxlevel = 3
+_REPR.maxlist = 4
+_REPR.maxdict = 4
+_REPR.maxstring = 30
+_REPR.maxother = 30
+_REPR.maxlong = 30
+
+
+def _short(v: Any) -> str:
+    """A bounded repr: never huge, never deep (input data can be both)."""
+    try:
+        return _REPR.repr(v)
+    except (RecursionError, ValueError):  # pragma: no cover - reprlib bounds the depth
+        return f"<{type(v).__name__}>"
+
+
+def split_selector(source: str | Path) -> tuple[str, str]:
+    """``("comb.dat", "2")`` for ``comb.dat#2``; ``(source, "")`` for anything else.
+
+    Examples
+    --------
+    >>> split_selector("comb.dat#2"), split_selector("a.json")
+    (('comb.dat', '2'), ('a.json', ''))
+    """
+    s = str(source)
+    if ".dat#" in s:
+        path, _, sel = s.rpartition("#")
+        if path.endswith(".dat"):
+            return path, sel
+    return s, ""
 
 
 def read_geometry(source: str | Path) -> Any:
@@ -71,36 +139,60 @@ def read_geometry(source: str | Path) -> Any:
     (n, 2) ndarray or shapely geometry
         An array for a simple ring or point list, a shapely Polygon for a polygon with
         holes, a MultiPolygon for several polygons.
+
+    Raises
+    ------
+    GeometryError
+        For every input that is not a polygon (usually :class:`InputFormatError`), naming
+        the file and, where it can, the line, item or vertex.
     """
     s = str(source)
-    path, _, sel = s.rpartition("#") if ".dat#" in s else (s, "", "")
+    path, sel = split_selector(s)
     if path.endswith(".dat"):
         items = read_cgal_dat(path)
-        if sel:
-            if not sel.isdigit() or not 1 <= int(sel) <= len(items):
+        if path != s:  # a selector, even an empty one
+            if not (sel.isascii() and sel.isdigit()) or not 1 <= int(sel) <= len(items):
                 raise InputFormatError(
-                    f"{s}: the file holds {len(items)} polygon(s); use #1..#{len(items)}"
+                    f"{s}: the file holds {len(items)} polygon(s); use #1..#{len(items)}",
+                    argument=s,
                 )
             return items[int(sel) - 1]
         if len(items) > 1:
             raise InputFormatError(
-                f"{s}: the file holds {len(items)} polygons; name one as {s}#1 ... {s}#{len(items)}"
+                f"{s}: the file holds {len(items)} polygons; "
+                f"name one as {s}#1 ... {s}#{len(items)}",
+                argument=s,
+                hint=f"name one polygon: {s}#1",
             )
         return items[0]
     return parse_geometry(_read_text(source), name=s)
 
 
 def parse_geometry(text: str, name: str = "input") -> Any:
-    """Parse polygon text (JSON point list, GeoJSON or WKT); see :func:`read_geometry`."""
+    """Parse polygon text (JSON point list, GeoJSON or WKT); see :func:`read_geometry`.
+
+    Any malformed text raises a :class:`GeometryError` naming ``name`` (never another
+    exception): invalid or too deeply nested JSON, numbers with too many digits or beyond
+    the float range, GeoJSON with missing or mis-shaped coordinates, bad WKT.
+    """
     s = text.strip()
     if not s:
-        raise EmptyGeometryError(f"{name}: empty input")
+        raise EmptyGeometryError(f"{name}: empty input", argument=name)
     if s[0] in "[{":
         try:
             data = json.loads(s)
         except json.JSONDecodeError as exc:
             raise InputFormatError(
-                f"{name}: not valid JSON ({exc.msg} at line {exc.lineno})"
+                f"{name}: not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})",
+                argument=name,
+            ) from None
+        except RecursionError:
+            raise InputFormatError(
+                f"{name}: JSON nested too deeply", argument=name, hint="a polygon is [[x, y], ...]"
+            ) from None
+        except ValueError as exc:  # e.g. an integer beyond Python's digit limit
+            raise InputFormatError(
+                f"{name}: unreadable JSON number ({exc})", argument=name
             ) from None
         if isinstance(data, list):
             return _json_points(data, name)
@@ -108,21 +200,38 @@ def parse_geometry(text: str, name: str = "input") -> Any:
     import shapely
 
     try:
-        geom = shapely.from_wkt(s)
+        with np.errstate(all="ignore"):  # 1e999 overflows quietly to inf (rejected later)
+            geom = shapely.from_wkt(s)
     except Exception:  # shapely raises its own GEOSException subclasses
-        raise InputFormatError(f"{name}: not a JSON point list, GeoJSON or WKT geometry") from None
+        geom = None
+    if geom is None:
+        raise InputFormatError(
+            f"{name}: not a JSON point list, GeoJSON or WKT geometry",
+            argument=name,
+            hint="write [[x, y], ...], a GeoJSON Polygon or WKT (POLYGON ((0 0, 1 0, 0 1, 0 0)))",
+        )
     return _simplify_geom(geom, name)
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
 def _json_points(data: list, name: str) -> np.ndarray:
     if not data:
-        raise EmptyGeometryError(f"{name}: empty point list")
+        raise EmptyGeometryError(f"{name}: empty point list", argument=name)
     for k, p in enumerate(data):
         if not (isinstance(p, list) and len(p) == 2):
-            raise ShapeError(f"{name}: item {k} is {p!r}, not an [x, y] pair")
+            raise ShapeError(
+                f"{name}: item {k} is {_short(p)}, not an [x, y] pair", argument=name, vertex=k
+            )
         for v in p:
-            if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise ShapeError(f"{name}: item {k} has a non-numeric coordinate {v!r}")
+            if not _is_number(v):
+                raise ShapeError(
+                    f"{name}: item {k} has a non-numeric coordinate {_short(v)}",
+                    argument=name,
+                    vertex=k,
+                )
     if all(type(v) is int for p in data for v in p):
         try:
             return np.array(data, dtype=np.int64)
@@ -130,24 +239,103 @@ def _json_points(data: list, name: str) -> np.ndarray:
             arr = np.empty((len(data), 2), dtype=object)
             arr[:] = [tuple(p) for p in data]
             return arr
+    for k, p in enumerate(data):
+        for v in p:
+            if type(v) is int:
+                try:
+                    float(v)
+                except OverflowError:
+                    raise OverflowGeometryError(
+                        f"{name}: item {k} has an integer beyond the float range beside "
+                        "float coordinates",
+                        argument=name,
+                        vertex=k,
+                        hint="write every coordinate as an integer to keep it exact",
+                    ) from None
     return np.array(data, dtype=np.float64)
 
 
-def _from_geojson(data: dict, name: str) -> Any:
+# GeoJSON: how deep each geometry type nests its positions
+_GEOJSON_DEPTH = {
+    "Point": 0,
+    "MultiPoint": 1,
+    "LineString": 1,
+    "LinearRing": 1,
+    "Polygon": 2,
+    "MultiLineString": 2,
+    "MultiPolygon": 3,
+}
+
+
+def _check_coords(v: Any, depth: int, name: str, where: str) -> None:
+    """Raise unless ``v`` is positions nested ``depth`` deep (a position: >= 2 numbers)."""
+    if depth == 0:
+        if not isinstance(v, list) or len(v) < 2:
+            raise ShapeError(
+                f"{name}: {where} is {_short(v)}, not a position [x, y]", argument=name
+            )
+        for c in v:
+            if not _is_number(c):
+                raise ShapeError(
+                    f"{name}: {where} has a non-numeric coordinate {_short(c)}", argument=name
+                )
+            if type(c) is int:
+                try:
+                    float(c)
+                except OverflowError:
+                    raise OverflowGeometryError(
+                        f"{name}: {where} has a coordinate beyond the float range", argument=name
+                    ) from None
+        return
+    if not isinstance(v, list):
+        raise ShapeError(f"{name}: {where} is {_short(v)}, not a list", argument=name)
+    for k, item in enumerate(v):
+        _check_coords(item, depth - 1, name, f"{where}[{k}]")
+
+
+def _from_geojson(data: Any, name: str, where: str = "the JSON") -> Any:
+    if not isinstance(data, dict):
+        raise ShapeError(f"{name}: {where} is {_short(data)}, not a GeoJSON object", argument=name)
     t = data.get("type")
     if t == "FeatureCollection":
-        feats = data.get("features") or []
+        feats = data.get("features")
+        if not isinstance(feats, list):
+            raise ShapeError(
+                f"{name}: FeatureCollection 'features' is {_short(feats)}, not a list",
+                argument=name,
+            )
         if len(feats) != 1:
-            raise ShapeError(f"{name}: FeatureCollection with {len(feats)} features; expected 1")
-        return _from_geojson(feats[0], name)
+            raise ShapeError(
+                f"{name}: FeatureCollection with {len(feats)} features; expected 1", argument=name
+            )
+        return _from_geojson(feats[0], name, "features[0]")
     if t == "Feature":
-        return _from_geojson(data.get("geometry") or {}, name)
+        geom = data.get("geometry")
+        if geom is None:
+            raise EmptyGeometryError(f"{name}: a Feature without a geometry", argument=name)
+        return _from_geojson(
+            geom, name, f"{where}'s geometry" if where != "the JSON" else "geometry"
+        )
+    if t == "GeometryCollection":
+        raise ShapeError(f"{name}: a GeometryCollection is not a polygon", argument=name)
+    if not isinstance(t, str) or t not in _GEOJSON_DEPTH:
+        raise InputFormatError(
+            f"{name}: not a GeoJSON geometry (type {_short(t)})",
+            argument=name,
+            hint="types: Polygon, MultiPolygon, LineString, MultiPoint, Point, Feature",
+        )
+    if "coordinates" not in data:
+        raise InputFormatError(f"{name}: GeoJSON {t} without 'coordinates'", argument=name)
+    coords = data["coordinates"]
+    _check_coords(coords, _GEOJSON_DEPTH[t], name, "coordinates")
     import shapely
 
     try:
-        geom = shapely.geometry.shape(data)
-    except Exception:
-        raise InputFormatError(f"{name}: not a GeoJSON geometry (type {t!r})") from None
+        geom = shapely.geometry.shape({"type": t, "coordinates": coords})
+    except Exception as exc:  # shapely's own errors: a ring too short, and so on
+        raise InputFormatError(
+            f"{name}: not a valid GeoJSON {t} ({_short(str(exc))})", argument=name
+        ) from None
     return _simplify_geom(geom, name)
 
 
@@ -155,7 +343,7 @@ def _simplify_geom(geom: Any, name: str) -> Any:
     import shapely
 
     if geom.is_empty:
-        raise EmptyGeometryError(f"{name}: empty {geom.geom_type}")
+        raise EmptyGeometryError(f"{name}: empty {geom.geom_type}", argument=name)
     gt = geom.geom_type
     if gt == "Polygon" and not len(geom.interiors):
         c = shapely.get_coordinates(geom.exterior)[:-1]
@@ -166,29 +354,52 @@ def _simplify_geom(geom: Any, name: str) -> Any:
         return _intify(shapely.get_coordinates(geom)[:-1])
     if gt in ("Polygon", "MultiPolygon"):
         return geom
-    raise ShapeError(f"{name}: a {gt} is not a polygon")
+    raise ShapeError(f"{name}: a {gt} is not a polygon", argument=name)
 
 
 def _intify(c: np.ndarray) -> np.ndarray:
     """Whole-number float coordinates from GeoJSON/WKT become ints (exact path)."""
-    if c.size and np.all(c == np.round(c)) and np.abs(c).max() < 2.0**53:
-        return c.astype(np.int64)
+    with np.errstate(invalid="ignore"):
+        if c.size and np.all(c == np.round(c)) and np.abs(c).max() < 2.0**53:
+            return c.astype(np.int64)
     return c
 
 
 # --------------------------------------------------------------------------------------
 # CGAL .dat
 
+_INT_TOKEN = re.compile(r"[+-]?\d+\Z", re.ASCII)
+_RATIONAL_TOKEN = re.compile(r"([+-]?\d+)/([+-]?\d+)\Z", re.ASCII)
+_DECIMAL_TOKEN = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\Z", re.ASCII)
+_CGAL_HINT = (
+    "a CGAL .dat file holds N and N vertices x y (ints, p/q or decimals), then nothing, "
+    "a second polygon, or H and H holes"
+)
+
 
 def _cgal_number(tok: str) -> int | float | Fraction:
-    if "/" in tok:
-        p, q = tok.split("/")
-        f = Fraction(int(p), int(q))
+    """One coordinate token: an int, a rational ``p/q`` or a finite decimal.
+
+    Raises ``ValueError`` with the reason for anything else.
+    """
+    if _INT_TOKEN.match(tok):
+        try:
+            return int(tok)
+        except ValueError:  # beyond Python's digit limit
+            raise ValueError("an integer with too many digits") from None
+    m = _RATIONAL_TOKEN.match(tok)
+    if m:
+        q = int(m.group(2))
+        if q == 0:
+            raise ValueError("a zero denominator")
+        f = Fraction(int(m.group(1)), q)
         return int(f) if f.denominator == 1 else f
-    try:
-        return int(tok)
-    except ValueError:
-        return float(tok)
+    if _DECIMAL_TOKEN.match(tok):
+        v = float(tok)
+        if not math.isfinite(v):
+            raise ValueError("beyond the float range")
+        return v
+    raise ValueError("not a number (int, p/q or decimal)")
 
 
 def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list:
@@ -202,9 +413,20 @@ def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list
     Returns
     -------
     list
-        (n, 2) ndarrays for simple polygons (int64 when every coordinate is an integer,
-        float64 otherwise), a shapely Polygon for a polygon with holes, and an
-        :class:`UnboundedPolygon` when the outer boundary is empty (``N = 0``).
+        (n, 2) ndarrays for simple polygons (int64 when every coordinate is an integer
+        that fits, exact Python ints beyond, float64 otherwise), a shapely Polygon for a
+        polygon with holes, and an :class:`UnboundedPolygon` when the outer boundary is
+        empty (``N = 0``).
+
+    Raises
+    ------
+    InputFormatError
+        For any malformed file, naming ``name``, the line and (for a coordinate) the
+        vertex: a bad or negative count, a token that is not a number, a zero
+        denominator, a number beyond the float range, a file ending early, extra tokens,
+        a hole or boundary with fewer than 3 vertices.
+    EmptyGeometryError
+        When a polygon has no vertices.
 
     Examples
     --------
@@ -213,51 +435,117 @@ def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list
     >>> [p.tolist() for p in parse_cgal_dat("3 0/1 0/1 1/1 0 0 1  2 5 5 6 6")]
     [[[0, 0], [1, 0], [0, 1]], [[5, 5], [6, 6]]]
     """
-    toks = text.split()
+    matches = list(re.finditer(r"\S+", text))
+    toks = [m.group() for m in matches]
     pos = 0
+
+    def line(k: int) -> int:
+        return (
+            text.count("\n", 0, matches[k].start()) + 1
+            if k < len(matches)
+            else (text.count("\n") + 1)
+        )
+
+    def fail(msg: str, k: int | None = None, vertex: int | None = None) -> InputFormatError:
+        where = f"line {line(k)}: " if k is not None else ""
+        return InputFormatError(
+            f"{name}: {where}{msg}", argument=name, vertex=vertex, hint=_CGAL_HINT
+        )
 
     def take(what: str) -> str:
         nonlocal pos
         if pos >= len(toks):
-            raise InputFormatError(f"{name}: file ends early (expected {what})")
+            raise fail(f"file ends early (expected {what})")
         pos += 1
         return toks[pos - 1]
 
     def count(what: str) -> int:
         t = take(what)
+        if not _INT_TOKEN.match(t) or t.startswith("-"):
+            raise fail(f"expected a count for {what}, found {_short(t)}", pos - 1)
         try:
             return int(t)
         except ValueError:
-            raise InputFormatError(f"{name}: expected a count for {what}, found {t!r}") from None
+            raise fail(f"the count for {what} has too many digits", pos - 1) from None
 
     def ring(n: int, what: str) -> np.ndarray:
-        vals = [_cgal_number(take(f"{what} coordinates")) for _ in range(2 * n)]
-        if any(isinstance(v, float) for v in vals):
-            return np.array([float(v) for v in vals], dtype=np.float64).reshape(n, 2)
-        if any(isinstance(v, Fraction) for v in vals):
-            return np.array([float(v) for v in vals], dtype=np.float64).reshape(n, 2)
-        return np.array(vals, dtype=np.int64).reshape(n, 2)
+        nonlocal pos
+        left = len(toks) - pos
+        if 2 * n > left:
+            raise fail(
+                f"file ends early: {what} has {n} vertices but only {left} numbers follow",
+                pos - 1,
+            )
+        vals: list = []
+        for j in range(2 * n):
+            t = toks[pos + j]
+            try:
+                vals.append(_cgal_number(t))
+            except ValueError as exc:
+                raise fail(
+                    f"{what} vertex {j // 2}: {_short(t)} is {exc}", pos + j, vertex=j // 2
+                ) from None
+        start = pos
+        pos += 2 * n
+        if any(isinstance(v, (float, Fraction)) for v in vals):
+            out = []
+            for j, v in enumerate(vals):
+                try:
+                    out.append(float(v))
+                except OverflowError:
+                    raise fail(
+                        f"{what} vertex {j // 2}: {_short(toks[start + j])} is beyond the float "
+                        "range (the ring has non-integer coordinates, so it is read as floats)",
+                        start + j,
+                        vertex=j // 2,
+                    ) from None
+            return np.array(out, dtype=np.float64).reshape(n, 2)
+        try:
+            return np.array(vals, dtype=np.int64).reshape(n, 2)
+        except OverflowError:
+            arr = np.empty((n, 2), dtype=object)
+            arr[:] = [(vals[2 * i], vals[2 * i + 1]) for i in range(n)]
+            return arr
+
+    def boundary(r: np.ndarray, what: str, k: int) -> None:
+        if len(r) < 3:
+            raise fail(f"{what} has {len(r)} vertices; a ring needs at least 3", k)
 
     n1 = count("the vertex count")
     first = ring(n1, "polygon 1")
     rest = len(toks) - pos
     if rest == 0:
         if n1 == 0:
-            raise EmptyGeometryError(f"{name}: no vertices")
+            raise EmptyGeometryError(f"{name}: no vertices", argument=name)
         return [first]
-    k = count("a count")
+    k_at = pos
+    k = count("the second polygon or the holes")
     rest = len(toks) - pos
     if layout == "polygons" or (layout == "auto" and k > 0 and rest == 2 * k):
         second = ring(k, "polygon 2")
+        if pos != len(toks):
+            raise fail(f"{len(toks) - pos} unexpected tokens at the end", pos)
+        for r, which in ((first, 1), (second, 2)):
+            if len(r) == 0:
+                raise EmptyGeometryError(f"{name}: polygon {which} has no vertices", argument=name)
         return [first, second]
-    holes = [ring(count(f"hole {h} vertex count"), f"hole {h}") for h in range(k)]
+    holes = []
+    for h in range(k):
+        at = pos
+        hole = ring(count(f"hole {h} vertex count"), f"hole {h}")
+        boundary(hole, f"hole {h}", at)
+        holes.append(hole)
     if pos != len(toks):
-        raise InputFormatError(f"{name}: {len(toks) - pos} unexpected tokens at the end")
+        raise fail(f"{len(toks) - pos} unexpected tokens at the end", pos)
     if n1 == 0:
         return [UnboundedPolygon(holes)]
+    boundary(first, "the outer boundary of a polygon with holes", 0)
     import shapely
 
-    return [shapely.Polygon(first, holes)]
+    try:
+        return [shapely.Polygon(first, holes)]
+    except Exception as exc:  # shapely: a ring that closes on itself too early, ...
+        raise fail(f"not a polygon with holes ({_short(str(exc))})", k_at) from None
 
 
 def read_cgal_dat(source: str | Path, layout: str = "auto") -> list:

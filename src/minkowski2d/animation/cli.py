@@ -11,6 +11,21 @@ from typing import Any
 __all__ = ["add_parser", "read_polygon"]
 
 _INLINE = re.compile(r"^[\s\d.,;:()\[\]eE+\-/]+$")
+_NAME_MAX = 255  # the longest file name (one path component) common file systems take
+
+
+def _is_inline(arg: str) -> bool:
+    """True when ``arg`` is a polygon typed inline rather than a file name: it is made of
+    numbers and separators only, and no file has that name. A text longer than a file
+    name can be (255 bytes) is never looked up as one."""
+    if arg == "-" or not _INLINE.match(arg) or not re.search(r"\d", arg):
+        return False
+    if len(arg.encode("utf-8", "surrogateescape")) > _NAME_MAX:
+        return True
+    try:
+        return not Path(arg).exists()
+    except (OSError, ValueError):
+        return True
 
 
 def read_polygon(arg: str, name: str) -> Any:
@@ -22,7 +37,7 @@ def read_polygon(arg: str, name: str) -> Any:
     >>> read_polygon("(0, 0), (2, 0), (0, 2)", "A")
     [(0, 0), (2, 0), (0, 2)]
     """
-    if arg != "-" and not Path(arg).exists() and _INLINE.match(arg) and re.search(r"\d", arg):
+    if _is_inline(arg):
         from .page import parse_points
 
         return parse_points(arg, name)
@@ -32,13 +47,12 @@ def read_polygon(arg: str, name: str) -> Any:
 
 
 def _cli_hint(exc: Exception) -> Exception:
-    """The same error, pointing to --hull instead of the Python keyword."""
-    from ..errors import NotConvexError
+    """The same error, pointing to --hull instead of the page's or library's advice."""
+    from .._cli_common import CLI_HULL_HINT, renamed_error
+    from ..errors import GeometryError
 
-    msg = str(exc).replace("(pass hull=True to", "(use --hull to")
-    msg = msg.replace("(or use the convex hull)", "(use --hull to use the convex hull)")
-    if isinstance(exc, NotConvexError):
-        return NotConvexError(msg, exc.vertex)
+    if isinstance(exc, GeometryError):
+        return renamed_error(exc, hull_hint=CLI_HULL_HINT)
     return exc
 
 
@@ -51,7 +65,7 @@ def _cspace_args(args: argparse.Namespace) -> dict:
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:
-    from ..cli import CLIError, emit
+    from .._cli_common import emit
     from ..errors import GeometryError
     from .page import render
 
@@ -61,18 +75,19 @@ def _cmd_animate(args: argparse.Namespace) -> int:
         page = render(a, b, title=args.title, **_cspace_args(args))
     except GeometryError as exc:
         raise _cli_hint(exc) from None
-    inputs = [p for p in (args.a, args.b, args.obstacle, args.robot) if p is not None]
-    try:
-        emit(page, args.output, inputs)
-    except OSError as exc:
-        raise CLIError(f"cannot write {args.output}: {exc.strerror}") from None
+    inputs = [
+        p
+        for p in (args.a, args.b, args.obstacle, args.robot)
+        if p is not None and not _is_inline(p)
+    ]
+    emit(page, args.output, inputs)
     if args.output not in (None, "-"):
         print(Path(args.output).resolve())
     return 0
 
 
 def _cmd_serve(args: argparse.Namespace) -> int:
-    from ..cli import CLIError
+    from .._cli_common import CLIError
     from ..errors import GeometryError
     from .page import SEED_A, SEED_B
     from .server import AnimationServer

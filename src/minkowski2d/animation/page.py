@@ -19,7 +19,7 @@ from typing import Any
 
 from .._types import ArrayLike2
 from ..convex import cspace_obstacle, normalize, reflect, translate
-from ..errors import GeometryError, NotConvexError, ShapeError
+from ..errors import GeometryError, OverflowGeometryError, ShapeError
 from ..trace import _json_point, format_point, merge_trace
 
 __all__ = [
@@ -36,6 +36,9 @@ __all__ = [
 #: The seed's walkthrough: triangle A and unit square B.
 SEED_A = [(0, 0), (2, 0), (0, 2)]
 SEED_B = [(0, 0), (1, 0), (1, 1), (0, 1)]
+
+#: The title of the demo page (``minkowski2d demo``, :func:`write_demo_page`).
+DEMO_TITLE = "Minkowski sum of a triangle and a square: the edge merge, step by step"
 
 #: Largest polygon (vertices, each operand) the page accepts: it draws every step.
 MAX_VERTICES = 2000
@@ -63,16 +66,52 @@ _NUMBER = re.compile(
 )
 
 
-def _number(tok: str) -> Any:
-    if "/" in tok:
-        num, den = tok.split("/")
-        if int(den) == 0:
-            raise ShapeError(f"division by zero in {tok!r}")
-        return Fraction(int(num), int(den))
+def _number(tok: str, name: str, k: int) -> Any:
+    """One typed number; ``k`` is its vertex. Raises ShapeError for what is not one."""
     try:
-        return int(tok)
+        if "/" in tok:
+            num, den = tok.split("/")
+            if int(den) == 0:
+                raise ShapeError(f"{name}: division by zero in {tok!r}", argument=name, vertex=k)
+            return Fraction(int(num), int(den))
+        try:
+            return int(tok)
+        except ValueError:
+            if tok.lstrip("+-").isdigit():
+                raise
+            return float(tok)
+    except ShapeError:
+        raise
     except ValueError:
-        return float(tok)
+        raise ShapeError(
+            f"{name}: cannot read the number {tok[:30]!r} (vertex {k}); a fraction is p/q "
+            "with whole numbers p and q",
+            argument=name,
+            vertex=k,
+        ) from None
+
+
+def _json_vertices(obj: Any, name: str) -> list:
+    """The vertices of a typed JSON polygon: a list of pairs, or a GeoJSON geometry."""
+    if isinstance(obj, dict):
+        t = obj.get("type")
+        if t not in ("Polygon", "LineString", "MultiPoint"):
+            raise ShapeError(
+                f"{name}: expected a list of (x, y) pairs or a GeoJSON Polygon, LineString "
+                "or MultiPoint",
+                argument=name,
+            )
+        coords = obj.get("coordinates")
+        if t == "Polygon":
+            if not (isinstance(coords, list) and coords):
+                raise ShapeError(f"{name}: a GeoJSON Polygon without coordinates", argument=name)
+            coords = coords[0]
+        if not isinstance(coords, list):
+            raise ShapeError(f"{name}: a GeoJSON {t} without coordinates", argument=name)
+        obj = coords
+    if not isinstance(obj, list):
+        raise ShapeError(f"{name}: expected a list of (x, y) pairs", argument=name)
+    return [tuple(p) if isinstance(p, list) else p for p in obj]
 
 
 def parse_points(text: str, name: str) -> list:
@@ -93,37 +132,38 @@ def parse_points(text: str, name: str) -> list:
     if s.startswith("[") or s.startswith("{"):
         try:
             obj = json.loads(s)
+        except RecursionError:
+            raise ShapeError(f"{name}: JSON nested too deeply", argument=name) from None
         except ValueError:
             pass
         else:
-            if isinstance(obj, dict) and obj.get("type") in ("Polygon", "LineString", "MultiPoint"):
-                obj = obj["coordinates"][0] if obj["type"] == "Polygon" else obj["coordinates"]
-            if isinstance(obj, list):
-                return [tuple(p) if isinstance(p, list) else p for p in obj]
-            raise ShapeError(f"{name}: expected a list of (x, y) pairs")
+            return _json_vertices(obj, name)
     toks = _NUMBER.findall(s)
     rest = _NUMBER.sub(" ", s)
     junk = re.sub(r"[\s,;()\[\]]+", "", rest)
     if junk:
-        raise ShapeError(f"{name}: cannot read {junk[:20]!r}; type numbers in (x, y) pairs")
+        raise ShapeError(
+            f"{name}: cannot read {junk[:20]!r}; type numbers in (x, y) pairs", argument=name
+        )
     if len(toks) % 2:
-        raise ShapeError(f"{name}: {len(toks)} numbers do not make (x, y) pairs")
-    nums = [_number(t) for t in toks]
+        raise ShapeError(f"{name}: {len(toks)} numbers do not make (x, y) pairs", argument=name)
+    nums = [_number(t, name, k // 2) for k, t in enumerate(toks)]
     return list(zip(nums[::2], nums[1::2], strict=True))
 
 
 def _renamed(exc: GeometryError, name: str) -> GeometryError:
-    """The same error with the argument named as the page names it."""
-    msg = str(exc)
-    for pre in ("a: ", "b: ", "p: ", "v: "):
-        if msg.startswith(pre):
-            msg = msg[len(pre) :]
-            break
-    msg = f"{name}: {msg}"
-    if isinstance(exc, NotConvexError):
-        msg = msg.replace("(pass hull=True to use the convex hull)", "(or use the convex hull)")
-        return NotConvexError(msg, exc.vertex)
-    return type(exc)(msg)
+    """The same error with the argument named as the page names it (from the error's
+    ``argument`` field), the ``hull=True`` advice worded for the page."""
+    from .._cli_common import renamed_error
+
+    arg = exc.argument
+    return renamed_error(
+        exc,
+        {arg: name} if arg in ("a", "b", "p", "v") else None,
+        prefix=None if arg in ("a", "b", "p", "v") else name,
+        hull_hint="or use the convex hull",
+        hint_in_message=True,
+    )
 
 
 def _call(name: str, fn: Any, *args: Any, **kw: Any) -> Any:
@@ -327,6 +367,25 @@ def page_data(
     >>> d["cspace"]["inflated_text"]
     ['(-1, -1)', '(2, -1)', '(2, 0)', '(0, 2)', '(-1, 2)']
     """
+    try:
+        return _page_data(a, b, obstacle, robot, hull, hold_view, roomy)
+    except (OverflowError, RecursionError):
+        # exact integers beyond the float range: the page draws in floats
+        raise OverflowGeometryError(
+            "coordinates beyond the float range (about 1.8e308) cannot be drawn",
+            hint="scale the polygons down",
+        ) from None
+
+
+def _page_data(
+    a: Any,
+    b: Any,
+    obstacle: Any,
+    robot: Any,
+    hull: bool,
+    hold_view: dict | None,
+    roomy: bool,
+) -> dict:
     _check_size(a, "A")
     _check_size(b, "B")
     t = _trace(a, b, hull)
@@ -375,9 +434,8 @@ def _trace(a: Any, b: Any, hull: bool) -> Any:
     try:
         return merge_trace(a, b, hull=hull)
     except GeometryError as exc:
-        msg = str(exc)
-        if msg.startswith(("a: ", "b: ")):
-            raise _renamed(exc, msg[0].upper()) from None
+        if exc.argument in ("a", "b"):
+            raise _renamed(exc, exc.argument.upper()) from None
         raise
 
 
@@ -516,5 +574,5 @@ def write_demo_page(path: str | Path = "animation.html") -> Path:
         SEED_A,
         SEED_B,
         path,
-        title="Minkowski sum of a triangle and a square: the edge merge, step by step",
+        title=DEMO_TITLE,
     )

@@ -360,6 +360,16 @@
     $("edit-hull").checked = !!D.hull;
   }
 
+  // the server's errors are {type, message, argument, vertex, hint} (or, from an older
+  // server, a plain string)
+  function errorText(e) {
+    if (!e) return "";
+    if (typeof e === "string") return e;
+    var m = String(e.message || "the server refused the input");
+    if (e.hint && m.indexOf(e.hint) < 0) m += " (hint: " + e.hint + ")";
+    return m;
+  }
+
   function showError(msg) {
     var e = $("error");
     if (msg) { e.textContent = msg; e.hidden = false; } else { e.textContent = ""; e.hidden = true; }
@@ -383,8 +393,9 @@
           show(keepEnd ? N() : S.k);
           drawCspace();
         } else {
-          showError(res.j.error || "the server refused the input");
-          $("edit-status").textContent = "Not applied: " + (res.j.error || "refused") + ". The last good polygons are kept.";
+          var why = errorText(res.j.error) || "the server refused the input";
+          showError(why);
+          $("edit-status").textContent = "Not applied: " + why + ". The last good polygons are kept.";
           $("edit-status").className = "status bad";
           if (!S.drag) show(S.k);
         }

@@ -1,10 +1,22 @@
 """``minkowski2d serve``: the animation page in an editable mode, on 127.0.0.1 only.
 
 ``GET /`` returns the page (the same template as the static file, with the editor
-shown); ``POST /api/trace`` takes the polygons as JSON and answers the new page data,
-or ``{"error": message}`` for input the geometry rejects (status 200: the answer is
-"this input is not valid"; 4xx is kept for malformed requests). All geometry
-runs here, in Python; the page only plays back what it is sent.
+shown); ``POST /api/trace`` takes the polygons as JSON and answers the new page data.
+
+Every answer that is not page data is ``{"error": {...}}``, the fields of
+:meth:`~minkowski2d.errors.GeometryError.to_dict` (``type``, ``message``, ``argument``,
+``vertex``, ``hint``), which the page shows:
+
+- polygons the geometry rejects (not convex, NaN, typed text it cannot read): status 200
+  (the answer is "this input is not valid"; the page keeps the last good state);
+- a malformed request: 400 (not JSON, nested too deeply, not an object, a polygon that
+  is neither text nor a list), 403 (a cross-site ``Origin``), 404, 411 (no
+  Content-Length), 413 (a body over :data:`MAX_BODY`), 415 (not ``application/json``),
+  421 (another ``Host``: DNS rebinding), 408 (the body did not arrive in time).
+
+At most :data:`WORKERS` requests are handled at once (more wait in the listen queue of
+:data:`BACKLOG`), and each connection times out after :data:`TIMEOUT` idle seconds, so
+neither a burst of requests nor stalled uploads can exhaust the process.
 """
 
 from __future__ import annotations
@@ -16,13 +28,64 @@ from http import HTTPStatus
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from typing import Any
 
-from ..errors import GeometryError, ShapeError
+from ..errors import GeometryError, InputFormatError, ShapeError
 from .page import SEED_A, SEED_B, page_data, parse_points, render
 
 __all__ = ["AnimationServer", "make_server", "polygons_from_request"]
 
 HOST = "127.0.0.1"
 MAX_BODY = 1 << 20  # bytes
+WORKERS = 8  # requests handled at once
+BACKLOG = 128  # connections the kernel queues while every worker is busy
+TIMEOUT = 10.0  # seconds a connection may stay silent (headers, body, keep-alive)
+_DRAIN_LIMIT = 16 * MAX_BODY  # an oversized body up to this is read (and dropped) for the 413
+
+
+class RequestError(Exception):
+    """A malformed request: answered with ``status`` and ``{"error": {...}}``."""
+
+    def __init__(
+        self, status: int, message: str, hint: str | None = None, argument: str | None = None
+    ) -> None:
+        super().__init__(message)
+        self.status = status
+        self.hint = hint
+        self.argument = argument
+
+    def to_dict(self) -> dict[str, object]:
+        return {
+            "type": "RequestError",
+            "message": str(self),
+            "argument": self.argument,
+            "vertex": None,
+            "hint": self.hint,
+        }
+
+
+_FIELDS = {"a": "A", "b": "B", "obstacle": "obstacle", "robot": "robot"}
+
+
+def _check_body(body: Any) -> dict:
+    """The request object, or a 400 RequestError naming the field of the wrong JSON type."""
+    if not isinstance(body, dict):
+        raise RequestError(
+            HTTPStatus.BAD_REQUEST,
+            "the request must be a JSON object",
+            hint='send {"a": "0 0, 2 0, 0 2", "b": "0 0, 1 0, 1 1, 0 1"}',
+        )
+    for key, name in _FIELDS.items():
+        v = body.get(key)
+        if v is None and key in ("obstacle", "robot"):
+            continue
+        if key in ("a", "b") and key not in body:
+            continue
+        if not isinstance(v, (str, list)):
+            raise RequestError(
+                HTTPStatus.BAD_REQUEST,
+                f"{name}: expected text or a list of (x, y) pairs, not {type(v).__name__}",
+                argument=name,
+            )
+    return body
 
 
 def _polygon(value: Any, name: str) -> Any:
@@ -32,7 +95,7 @@ def _polygon(value: Any, name: str) -> Any:
         return parse_points(value, name)
     if isinstance(value, list):
         return [tuple(p) if isinstance(p, list) else p for p in value]
-    raise ShapeError(f"{name}: expected text or a list of (x, y) pairs")
+    raise ShapeError(f"{name}: expected text or a list of (x, y) pairs", argument=name)
 
 
 def polygons_from_request(body: dict) -> dict:
@@ -45,7 +108,9 @@ def polygons_from_request(body: dict) -> dict:
     [(0, 0), (1, 1)]
     """
     if not isinstance(body, dict):
-        raise ShapeError("the request must be a JSON object")
+        raise ShapeError(
+            "the request must be a JSON object", hint='send {"a": "0 0, 2 0, 0 2", "b": ...}'
+        )
     view = body.get("view")
     if not isinstance(view, dict):
         view = None
@@ -64,7 +129,10 @@ class _Handler(BaseHTTPRequestHandler):
     server: AnimationServer
     server_version = "minkowski2d"
     protocol_version = "HTTP/1.1"
-    timeout = 60  # seconds an idle keep-alive connection is kept
+
+    def setup(self) -> None:
+        self.timeout = self.server.timeout_s  # every read and write on the socket
+        super().setup()
 
     def log_message(self, format: str, *args: Any) -> None:  # noqa: A002
         if self.server.verbose:
@@ -76,6 +144,8 @@ class _Handler(BaseHTTPRequestHandler):
         self.send_header("Content-Length", str(len(body)))
         self.send_header("Cache-Control", "no-store")
         self.send_header("X-Content-Type-Options", "nosniff")
+        if self.close_connection:
+            self.send_header("Connection", "close")
         self.end_headers()
         if self.command != "HEAD":
             self.wfile.write(body)
@@ -83,10 +153,25 @@ class _Handler(BaseHTTPRequestHandler):
     def _json(self, status: int, obj: Any) -> None:
         self._send(status, json.dumps(obj, allow_nan=False).encode(), "application/json")
 
+    def _error(self, status: int, exc: Any) -> None:
+        self._json(status, {"error": exc.to_dict()})
+
     def _host_ok(self) -> bool:
         # refuse requests addressed to another host name (DNS rebinding)
-        host = (self.headers.get("Host") or "").rsplit(":", 1)[0].strip("[]")
+        host = (self.headers.get("Host") or "").strip().lower()
+        if host.startswith("["):
+            host = host[1:].split("]", 1)[0]
+        else:
+            host = host.rsplit(":", 1)[0]
         return host in ("127.0.0.1", "localhost", "")
+
+    def _origin_ok(self) -> bool:
+        # a browser names the page a request comes from; only our own pages may post
+        origin = self.headers.get("Origin")
+        if origin is None:
+            return True
+        port = self.server.server_address[1]
+        return origin.strip().lower() in (f"http://127.0.0.1:{port}", f"http://localhost:{port}")
 
     def do_GET(self) -> None:  # noqa: N802
         if not self._host_ok():
@@ -104,38 +189,94 @@ class _Handler(BaseHTTPRequestHandler):
     do_HEAD = do_GET
 
     def do_POST(self) -> None:  # noqa: N802
-        if not self._host_ok():
-            self._send(HTTPStatus.MISDIRECTED_REQUEST, b"wrong host\n", "text/plain")
-            return
-        if self.path.split("?", 1)[0] != "/api/trace":
-            self._json(HTTPStatus.NOT_FOUND, {"error": "not found"})
-            return
         try:
-            n = int(self.headers.get("Content-Length", ""))
-        except ValueError:
-            self._json(HTTPStatus.LENGTH_REQUIRED, {"error": "Content-Length required"})
-            return
-        if n < 0 or n > MAX_BODY:
-            self.close_connection = True
-            self._json(HTTPStatus.REQUEST_ENTITY_TOO_LARGE, {"error": "request too large"})
-            return
-        raw = self.rfile.read(n)
-        try:
-            body = json.loads(raw.decode("utf-8"))
-        except (UnicodeDecodeError, ValueError):
-            self._json(HTTPStatus.BAD_REQUEST, {"error": "the request is not valid JSON"})
+            body = self._read_request()
+        except RequestError as exc:
+            if exc.status >= 408:
+                self.close_connection = True  # the body may be unread
+            self._error(exc.status, exc)
             return
         # Input the geometry rejects is an answer, not a protocol failure: status 200 with
         # {"error": ...}, which the page shows (a 4xx would also log a console error).
         try:
             data = page_data(**polygons_from_request(body))
         except GeometryError as exc:
-            self._json(HTTPStatus.OK, {"error": str(exc)})
+            self._error(HTTPStatus.OK, exc)
             return
-        except (ValueError, TypeError, OverflowError) as exc:
-            self._json(HTTPStatus.OK, {"error": f"cannot use this input: {exc}"})
+        except (ValueError, TypeError, ArithmeticError, RecursionError) as exc:
+            err = InputFormatError(f"cannot use this input: {exc}")
+            self._error(HTTPStatus.OK, err)
             return
-        self._json(HTTPStatus.OK, data)
+        except Exception as exc:  # a bug: still answer, and keep the traceback in the log
+            self.server.handle_error(self.request, self.client_address)
+            err = RequestError(HTTPStatus.INTERNAL_SERVER_ERROR, f"internal error: {exc!r}")
+            self._error(HTTPStatus.INTERNAL_SERVER_ERROR, err)
+            return
+        try:
+            text = json.dumps(data, allow_nan=False)
+        except ValueError:
+            err = GeometryError("a coordinate is not finite after drawing; cannot render")
+            self._error(HTTPStatus.OK, err)
+            return
+        self._send(HTTPStatus.OK, text.encode(), "application/json")
+
+    def _drain(self, n: int) -> None:
+        """Read and drop a body somewhat over the cap, so that the client, still sending,
+        can read the 413 (a larger one is not read: the connection is closed)."""
+        if n > _DRAIN_LIMIT:
+            return
+        try:
+            while n > 0:
+                chunk = self.rfile.read(min(n, 1 << 16))
+                if not chunk:
+                    return
+                n -= len(chunk)
+        except OSError:
+            return
+
+    def _read_request(self) -> Any:
+        """The JSON body of a well-formed API request, or a RequestError."""
+        if not self._host_ok():
+            raise RequestError(HTTPStatus.MISDIRECTED_REQUEST, "wrong host")
+        if not self._origin_ok():
+            raise RequestError(HTTPStatus.FORBIDDEN, "cross-site requests are refused")
+        if self.path.split("?", 1)[0] != "/api/trace":
+            raise RequestError(HTTPStatus.NOT_FOUND, "not found", hint="POST /api/trace")
+        ctype = (self.headers.get("Content-Type") or "").split(";", 1)[0].strip().lower()
+        if ctype != "application/json":
+            raise RequestError(
+                HTTPStatus.UNSUPPORTED_MEDIA_TYPE,
+                "the request must be application/json",
+                hint="Content-Type: application/json",
+            )
+        if self.headers.get("Transfer-Encoding"):
+            raise RequestError(HTTPStatus.LENGTH_REQUIRED, "Content-Length required")
+        raw_len = (self.headers.get("Content-Length") or "").strip()
+        if not (raw_len.isascii() and raw_len.isdigit()) or len(raw_len) > 12:
+            raise RequestError(HTTPStatus.LENGTH_REQUIRED, "Content-Length required")
+        n = int(raw_len)
+        if n > MAX_BODY:
+            self._drain(n)
+            raise RequestError(
+                HTTPStatus.REQUEST_ENTITY_TOO_LARGE,
+                f"request too large ({n} bytes; at most {MAX_BODY})",
+            )
+        try:
+            raw = self.rfile.read(n)
+        except TimeoutError:
+            raise RequestError(
+                HTTPStatus.REQUEST_TIMEOUT, "the request body did not arrive"
+            ) from None
+        if len(raw) < n:
+            raise RequestError(HTTPStatus.BAD_REQUEST, "the request body ended early")
+        try:
+            return _check_body(json.loads(raw.decode("utf-8")))
+        except RecursionError:
+            raise RequestError(
+                HTTPStatus.BAD_REQUEST, "the request JSON is nested too deeply"
+            ) from None
+        except (UnicodeDecodeError, ValueError):
+            raise RequestError(HTTPStatus.BAD_REQUEST, "the request is not valid JSON") from None
 
 
 class AnimationServer(ThreadingHTTPServer):
@@ -149,10 +290,15 @@ class AnimationServer(ThreadingHTTPServer):
         0 picks a free port; see :attr:`url`.
     verbose : bool, default False
         Log each request to stderr.
+    workers : int, default :data:`WORKERS`
+        Requests handled at once; more connections wait in the listen queue.
+    timeout : float, default :data:`TIMEOUT`
+        Seconds a connection may stay silent before it is closed.
     """
 
     daemon_threads = True
     allow_reuse_address = True
+    request_queue_size = BACKLOG
 
     def __init__(
         self,
@@ -164,14 +310,36 @@ class AnimationServer(ThreadingHTTPServer):
         hull: bool = False,
         port: int = 0,
         verbose: bool = False,
+        workers: int = WORKERS,
+        timeout: float = TIMEOUT,
     ) -> None:
         # compute (and validate) the first page before binding the port
         self._data = page_data(a, b, obstacle=obstacle, robot=robot, hull=hull, roomy=True)
         self.verbose = verbose
+        self.timeout_s = float(timeout)
+        self._slots = threading.BoundedSemaphore(max(1, int(workers)))
         super().__init__((HOST, port), _Handler)
 
+    def process_request(self, request: Any, client_address: Any) -> None:
+        # a bounded pool: wait (accepting nothing more) until one of the workers is free
+        self._slots.acquire()
+        try:
+            t = threading.Thread(target=self._work, args=(request, client_address), daemon=True)
+            t.start()
+        except BaseException:
+            self._slots.release()
+            self.shutdown_request(request)
+            raise
+
+    def _work(self, request: Any, client_address: Any) -> None:
+        try:
+            self.process_request_thread(request, client_address)
+        finally:
+            self._slots.release()
+
     def handle_error(self, request: Any, client_address: Any) -> None:
-        # a browser closing a kept-alive connection is not an error worth a traceback
+        # a browser closing a kept-alive connection, or a silent client timing out, is not
+        # an error worth a traceback
         if isinstance(sys.exc_info()[1], (ConnectionError, TimeoutError)):
             return
         super().handle_error(request, client_address)
