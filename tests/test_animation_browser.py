@@ -333,7 +333,9 @@ def test_served_mode_edit_and_invalid_input(watched, server):
     page.fill("#edit-a", "0 0, nan 1, 0 2")
     page.get_by_role("button", name="Apply").click()
     _wait_reply(page, 3)
-    assert page.inner_text("#error") == "A: vertex 1 has a non-finite coordinate (nan, 1.0)"
+    assert page.inner_text("#error") == (
+        "A: vertex 1 has a non-finite coordinate (nan, 1.0) (hint: remove NaN and infinite values)"
+    )
     page.fill("#edit-b", "")
     page.fill("#edit-a", "0 0, 1 0, 0 1")
     page.get_by_role("button", name="Apply").click()

@@ -40,7 +40,6 @@ __all__ = [
 ]
 
 #: the API hint the library puts in NotConvexError messages, and its command-line form
-_API_HULL_HINT = " (pass hull=True to use the convex hull)"
 CLI_HULL_HINT = "use --hull to use the convex hull"
 
 
@@ -196,35 +195,27 @@ def renamed_error(
     Examples
     --------
     >>> from minkowski2d.errors import NotConvexError
-    >>> e = NotConvexError("a: not convex at vertex 2 (pass hull=True to use the convex hull)", 2)
+    >>> e = NotConvexError("a: not convex at vertex 2 (pass hull=True)", 2, argument="a",
+    ...                    hint="pass hull=True")
     >>> r = renamed_error(e, {"a": "star.json"}, hull_hint=CLI_HULL_HINT)
     >>> str(r), r.argument, r.vertex, r.hint
     ('star.json: not convex at vertex 2', 'star.json', 2, 'use --hull to use the convex hull')
     """
     from .errors import NotConvexError
 
-    msg = str(exc)
-    arg = exc.argument
     hint = exc.hint
-    if names and arg in names:
-        head = f"{arg}: "
-        if msg.startswith(head):
-            msg = f"{names[arg]}: {msg[len(head) :]}"
-        arg = names[arg]
-    elif prefix is not None:
-        msg = f"{prefix}: {msg}"
-        arg = prefix
     if hull_hint is not None and isinstance(exc, NotConvexError):
-        for tail in (_API_HULL_HINT, f" ({hint})" if hint else None):
-            if tail and msg.endswith(tail):
-                msg = msg[: -len(tail)]
         hint = hull_hint
-        if hint_in_message:
-            msg = f"{msg} ({hull_hint})"
-    try:
-        return type(exc)(msg, argument=arg, vertex=exc.vertex, hint=hint)
-    except TypeError:  # a subclass with another signature
-        return GeometryError(msg, argument=arg, vertex=exc.vertex, hint=hint)
+    else:
+        hint_in_message = False
+    if names and exc.argument in names:
+        return exc.renamed(names[exc.argument], hint, hint_in_message)
+    if prefix is not None:
+        inner = exc.argument
+        out = exc.renamed(f"{prefix}: {inner}" if inner else prefix, hint, hint_in_message)
+        out.argument = prefix
+        return out
+    return exc.renamed(exc.argument, hint, hint_in_message)
 
 
 def _one_line(s: str) -> str:

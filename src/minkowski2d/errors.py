@@ -88,7 +88,9 @@ class GeometryError(ValueError):
             msg = msg[: -len(self.hint) - 3]
         return msg
 
-    def renamed(self, argument: str | None = None, hint: str | None = None) -> GeometryError:
+    def renamed(
+        self, argument: str | None = None, hint: str | None = None, hint_in_message: bool = True
+    ) -> GeometryError:
         """The same error (same class, vertex and detail) naming another argument and/or
         giving another hint: how the CLI names a file instead of ``a``, and how the page
         points to its own controls instead of ``hull=True``.
@@ -105,7 +107,7 @@ class GeometryError(ValueError):
         msg = self.detail
         if arg:
             msg = f"{arg}: {msg}"
-        if hint:
+        if hint and hint_in_message:
             msg = f"{msg} ({hint})"
         new = type(self).__new__(type(self))
         GeometryError.__init__(new, msg, argument=arg, vertex=self.vertex, hint=hint)
