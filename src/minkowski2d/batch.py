@@ -62,7 +62,8 @@ class Ragged:
         if isinstance(polygons, Ragged):
             return polygons
         if type(polygons) is list or type(polygons) is tuple:
-            # lists of (x, y) pairs of Python ints/floats: one pass in the core
+            # lists of (x, y) pairs of Python ints/floats, or of (n, 2) int64/float64
+            # arrays: one pass in the core
             coords, offsets, _, status, member, vertex = _ext.flatten(polygons)
             if status == _OK and len(coords) == offsets[-1]:
                 if not (np.diff(offsets) == 0).any():

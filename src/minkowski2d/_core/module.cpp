@@ -413,6 +413,45 @@ nb::tuple sum_lists(nb::handle a, nb::handle b) {
   return nb::make_tuple(owned(out, (std::size_t)k, 2), (int)mk::OK, 0, 0, kind);
 }
 
+// Read a C-contiguous (n, 2) int64/float64 buffer (a numpy array) like read_pairs.
+inline ReadResult read_buffer(PyObject* obj, std::vector<i64>& ints, std::vector<double>& dbls) {
+  if (!PyObject_CheckBuffer(obj)) return {mk::UNHANDLED, 0, 0};
+  Py_buffer view;
+  if (PyObject_GetBuffer(obj, &view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT | PyBUF_ND) != 0) {
+    PyErr_Clear();
+    return {mk::UNHANDLED, 0, 0};
+  }
+  struct Release {
+    Py_buffer* v;
+    ~Release() { PyBuffer_Release(v); }
+  } release{&view};
+  const char* f = view.format ? view.format : "B";
+  if (*f == '<' || *f == '=' || *f == '@') ++f;
+  bool is_f = (f[0] == 'd' && f[1] == 0), is_i = ((f[0] == 'l' || f[0] == 'q') && f[1] == 0);
+  if (view.ndim != 2 || view.shape[1] != 2 || view.shape[0] == 0 || view.itemsize != 8 ||
+      !(is_f || is_i))
+    return {mk::UNHANDLED, 0, 0};
+  Py_ssize_t n = view.shape[0];
+  ints.resize(2 * n);
+  dbls.resize(2 * n);
+  if (is_f) {
+    const double* d = static_cast<const double*>(view.buf);
+    for (Py_ssize_t k = 0; k < 2 * n; ++k) {
+      if (!(d[k] - d[k] == 0.0)) return {mk::NONFINITE, 1, (i64)(k / 2)};
+      dbls[k] = d[k];
+      ints[k] = 0;
+    }
+    return {mk::OK, 1, 0};
+  }
+  const i64* v = static_cast<const i64*>(view.buf);
+  for (Py_ssize_t k = 0; k < 2 * n; ++k) {
+    if (v[k] >= mk::INT_LIMIT || v[k] <= -mk::INT_LIMIT) return {mk::UNHANDLED, 0, 0};
+    ints[k] = v[k];
+    dbls[k] = (double)v[k];
+  }
+  return {mk::OK, 0, 0};
+}
+
 // Flatten a sequence of polygons (each a list/tuple of (x, y) pairs of Python ints or
 // floats, or a C-contiguous (n, 2) int64/float64 ndarray) in one pass. Returns
 // (coords (N,2), offsets (P+1,), kind, status, member, vertex); status UNHANDLED sends
@@ -431,7 +470,8 @@ nb::tuple flatten(nb::handle seq) {
   bool any_float = false, big_int = false, any_int = false;
   for (Py_ssize_t q = 0; q < P; ++q) {
     PyObject* it = items[q];
-    ReadResult r = read_pairs(it, ibuf, dbuf);
+    ReadResult r = (PyList_Check(it) || PyTuple_Check(it)) ? read_pairs(it, ibuf, dbuf)
+                                                            : read_buffer(it, ibuf, dbuf);
     if (r.status == mk::NONFINITE)
       return nb::make_tuple(nb::none(), nb::none(), 1, (int)mk::NONFINITE, (i64)q, r.bad);
     if (r.status != mk::OK)
