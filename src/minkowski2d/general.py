@@ -369,21 +369,31 @@ def _flat_geom(flat: np.ndarray) -> Any:
 
 
 def _unscale(geom: Any, k: int, argument: str) -> Any:
-    """Scale a result back by 2**-k; OverflowGeometryError if a coordinate overflows.
+    """Scale a result back by 2**-k; OverflowGeometryError if a coordinate overflows, or
+    if the whole result lies below 2**-1022 and gradual underflow rounds it.
 
     The scale back is exact except where a coordinate falls below 2**-1022 (gradual
-    underflow rounds it to a multiple of 2**-1074)."""
+    underflow rounds it to a multiple of 2**-1074); while the result's largest
+    |coordinate| is 2**-1022 or more, that is at most 2**-53 of its extent."""
     import shapely
 
-    if k == 0:
+    if k == 0 or geom.is_empty:
         return geom
-    with np.errstate(over="ignore"):
+    with np.errstate(over="ignore", under="ignore"):
         out = shapely.transform(geom, lambda c: np.ldexp(c, -k))
-    if not np.isfinite(shapely.get_coordinates(out)).all():
+    c = shapely.get_coordinates(out)
+    if not np.isfinite(c).all():
         raise OverflowGeometryError(
             f"{argument}: the result overflows float64 (a coordinate beyond ±1.8e308)",
             argument=argument,
             hint="scale the input down; the result's coordinates must fit in float64",
+        )
+    if np.abs(c).max() < 2.0**-1022 and not (np.ldexp(c, k) == shapely.get_coordinates(geom)).all():
+        raise OverflowGeometryError(
+            f"{argument}: the result underflows float64 (all its coordinates are below "
+            "2**-1022 and would be rounded to multiples of 2**-1074)",
+            argument=argument,
+            hint="scale the input up; the result's coordinates must be float64 normals",
         )
     return out
 
@@ -1010,16 +1020,6 @@ def _from_exact_points(pts: list) -> Any:
     if len(out) == 2:
         return shapely.LineString(out)
     return shapely.Polygon(out)
-
-
-def _erode_fallback(A: np.ndarray, B: np.ndarray) -> Any:
-    """Erosion as the intersection of the translates A − b (used for rare degenerate
-    configurations of the exact convex pass)."""
-    import shapely
-
-    pa = shapely.Polygon(A)
-    pieces = [shapely.affinity.translate(pa, -x, -y) for x, y in B.tolist()]
-    return shapely.intersection_all(pieces)
 
 
 def minkowski_difference(a: Any, b: Any) -> Any:
