@@ -65,7 +65,7 @@ SCALE_EXPONENT = 20
 MAX_PIECE_PAIRS = 1 << 22
 #: ``method="convolution"``: at most this many (edge, vertex) pairs tested (the sum of
 #: ``n * m`` over the ring pairs) ...
-MAX_CONVOLUTION_TESTS = 1 << 26
+MAX_CONVOLUTION_TESTS = 1 << 24
 #: ... and at most this many pairs of convolution segments that meet (the arrangement).
 MAX_CONVOLUTION_CROSSINGS = 1 << 22
 
@@ -452,11 +452,15 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
         The polygon is not valid (its boundary crosses itself, a hole lies outside ...).
     ShapeError, EmptyGeometryError, NonFiniteError
         Bad input.
+    GeometryError
+        An integer coordinate has more than 53 significant bits, or GEOS failed.
 
     Notes
     -----
     Time O(n log n) for the triangulation and O(n) for the merge; every turn is decided
-    by the exact orientation predicate.
+    by the exact orientation predicate. GEOS triangulates the polygon scaled by a power
+    of two (largest |coordinate| in ``[2**19, 2**20)``); the pieces are scaled back, so
+    their vertices are the input vertices bit for bit at any magnitude.
 
     Examples
     --------
@@ -699,14 +703,18 @@ def _convolution_limit(A: _Operand, B: _Operand, what: str, count: int, limit: i
 
 
 def _count_crossings(segs: np.ndarray, limit: int) -> int:
-    """Pairs of distinct segments that meet, counted in chunks; stops above ``limit``."""
+    """Pairs of distinct segments that meet, counted in chunks; stops above ``limit``.
+
+    A chunk of ``c`` segments yields at most ``c * len(segs)`` pairs, so ``c`` is chosen
+    to keep that near ``limit`` (the count itself never needs more memory than that)."""
     import shapely
 
     lines = shapely.linestrings(segs)
     tree = shapely.STRtree(lines)
+    step = max(1, min(4096, limit // max(len(lines), 1)))
     total = 0
-    for i in range(0, len(lines), 2048):
-        chunk = lines[i : i + 2048]
+    for i in range(0, len(lines), step):
+        chunk = lines[i : i + step]
         total += len(tree.query(chunk, predicate="intersects")[0]) - len(chunk)
         if total // 2 > limit:
             break
@@ -1039,19 +1047,38 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     Returns
     -------
     shapely geometry
-        * convex ``a`` and convex ``b`` (no holes): computed exactly in O(n + m) — a
-          Polygon, or a LineString / Point when the erosion is a segment or a single
-          point (``A ⊖ A`` is the point at the origin);
-        * otherwise: ``A ⊖ B = complement(complement(A) ⊕ (−B))`` with the general sum,
-          a Polygon or MultiPolygon (the closure of the erosion's interior: parts of
-          zero width are not represented);
+        * convex ``a`` (no holes), any ``b``: computed exactly (``c + B ⊆ A`` iff
+          ``c + hull(B) ⊆ A``) in O(n + m log m) — a Polygon, or a LineString / Point
+          when the erosion is a segment or a single point (``A ⊖ A`` is the point at
+          the origin). This is the inner-fit polygon of a part in a convex sheet;
+        * otherwise: ``A ⊖ B = complement(complement(A) ⊕ (−B))``, computed as
+          ``G \\ ((F \\ A) ⊕ (−B))`` with the box ``G ⊇ bbox(A) ⊖ bbox(B)`` and the
+          box ``F ⊇ G ⊕ B`` (see the notes), a Polygon or MultiPolygon (the closure of
+          the erosion's interior: parts of zero width are not represented);
         * when ``B`` fits nowhere inside ``A``: an empty Polygon (``POLYGON EMPTY``,
           ``result.is_empty`` is True).
+
+        Neither operand needs to contain the origin: ``A ⊖ (B + t) = (A ⊖ B) − t``.
 
     Raises
     ------
     SelfIntersectionError, ShapeError, EmptyGeometryError, NonFiniteError
         Bad input (``a`` must have area).
+    GeometryError
+        An integer coordinate has more than 53 significant bits, or GEOS failed.
+    OverflowGeometryError
+        The erosion has a coordinate beyond the float64 range (or lies wholly below
+        2**-1022, where float64 cannot hold it to full precision).
+    ResourceLimitError
+        The inner sum exceeds the bounds of :func:`minkowski_sum_general`.
+
+    Notes
+    -----
+    The erosion lies in ``bbox(A) ⊖ bbox(B)`` (``c + B ⊆ A`` puts ``c + bbox(B)`` in
+    ``bbox(A)``). ``G`` is that box grown by a margin; every ``c + b`` with ``c ∈ G``
+    lies in ``F``, so ``c`` misses the erosion exactly when ``c + b ∈ F \\ A`` for some
+    ``b ∈ B``. Like the sum, the erosion is computed on operands scaled by one power of
+    two (exact), so every magnitude representable in float64 works alike.
 
     Examples
     --------
@@ -1063,6 +1090,9 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     'LINESTRING (0 0, 0 2)'
     >>> mk.minkowski_difference(sq, [(0, 0), (5, 0), (0, 5)]).is_empty
     True
+    >>> L = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]
+    >>> mk.minkowski_difference(L, [(10, 10), (11, 10), (11, 11), (10, 11)]).area
+    5.0
     >>> mk.cspace_obstacle(sq, [(0, 0), (1, 0), (1, 1), (0, 1)]).tolist()  # not the same
     [[-1, -1], [4, -1], [4, 4], [-1, 4]]
     """
