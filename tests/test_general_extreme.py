@@ -17,7 +17,12 @@ import shapely.errors
 
 import minkowski2d as mk
 from minkowski2d import general
-from minkowski2d.errors import GeometryError, OverflowGeometryError, ResourceLimitError
+from minkowski2d.errors import (
+    GeometryError,
+    OverflowGeometryError,
+    ResourceLimitError,
+    ShapeError,
+)
 
 L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
 SCALES = [2.0**-1000, 1e-200, 1e-20, 1.0, 1e20, 1e155, 1e200, 2.0**344, 2.0**900]
@@ -246,3 +251,16 @@ def test_convolution_limits(monkeypatch, limit):
     monkeypatch.setattr(general, "MAX_PIECE_PAIRS", 1)
     with pytest.raises(ResourceLimitError):  # default: nothing left to switch to
         mk.minkowski_sum_general(L, L)
+
+
+def test_point_in_a_collection_is_refused_not_dropped():
+    # {p} ⊕ B has area: uniting the collection used to drop the point silently
+    sq = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    with pytest.raises(ShapeError) as e:
+        mk.minkowski_sum_general([sq, [(5, 5)]], sq)
+    assert e.value.argument == "a[1]" and e.value.hint
+    with pytest.raises(ShapeError):
+        mk.minkowski_difference([sq, [(5, 5), (6, 5)]], [(0, 0)])
+    # a point or segment on its own is an operand like any other
+    r = mk.minkowski_sum_general([(5, 5)], sq)
+    assert r.equals(shapely.Polygon([(5, 5), (6, 5), (6, 6), (5, 6)]))

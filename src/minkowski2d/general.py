@@ -298,7 +298,15 @@ def _build(raw: _Raw, k: int) -> _Operand:
         geoms = []
         for item in raw.value:
             op = _build(item, k)
-            geoms.append(op.geom if op.flat is None else _flat_geom(op.flat))
+            if op.flat is not None:
+                # uniting would drop it, yet {p} ⊕ B has area: refuse rather than lose it
+                raise ShapeError(
+                    f"{item.name}: a point or segment in a collection of polygons "
+                    "(every member of a collection must have area)",
+                    argument=item.name,
+                    hint="pass the point or segment as an operand of its own",
+                )
+            geoms.append(op.geom)
         with _boundary(name, "uniting the polygons of the collection"):
             u = shapely.get_parts(shapely.union_all(geoms))
         polys = u[shapely.get_type_id(u) == 3]
