@@ -19,13 +19,20 @@ Two methods compute ``A ⊕ B`` for simple polygons with holes and collections o
   one as a hole only if ``A`` does not meet ``x − B`` for a point ``x`` inside it.
 
 Both return a shapely Polygon or MultiPolygon (exterior rings counter-clockwise, holes
-clockwise, holes kept). Coordinates are float64 throughout: integer input up to 2**53
-is represented exactly, piece sums are exact for it, and GEOS computes the crossings of
-the final union in double precision.
+clockwise, holes kept). Coordinates are float64 throughout: integers with at most 53
+significant bits are represented exactly (others are refused), piece sums are exact for
+them, and GEOS computes the crossings of the final union in double precision. GEOS only
+ever sees the operands multiplied by one common power of two that puts their largest
+|coordinate| in ``[2**19, 2**20)``; the result is multiplied back (both exact), so tiny
+and huge magnitudes behave like magnitudes near 1. A shapely/GEOS failure surfaces as a
+:class:`~minkowski2d.errors.GeometryError` naming the operand; the work is bounded by
+``MAX_PIECE_PAIRS``, ``MAX_CONVOLUTION_TESTS`` and ``MAX_CONVOLUTION_CROSSINGS``
+(:class:`~minkowski2d.errors.ResourceLimitError`).
 
 :func:`minkowski_difference` is the erosion ``A ⊖ B = {c : c + B ⊆ A}``. It is *not*
 ``A ⊕ (−B)`` (that is :func:`minkowski2d.cspace_obstacle`, the set of translations
 where ``B`` *touches* ``A``); the erosion is the set where ``B`` fits *inside* ``A``.
+Neither operand needs to contain the origin.
 """
 
 from __future__ import annotations
