@@ -221,3 +221,23 @@ def test_erosion_named_grid(a, b):
         assert E.symmetric_difference(shapely.affinity.translate(A, 9, 9)).area == 0
         return
     assert check_by_oracle(A, B, E, np.random.default_rng(1), n=300) > 150
+
+
+def test_b_with_a_hole_fits_around_a_hole_of_a():
+    # a ring of width 1 around A's hole: it fits wherever its hole covers A's hole
+    A = shapely.Polygon(square(0, 0, 10), [square(4, 4, 2)[::-1]])
+    for dx, dy in [(0, 0), (-30, 17)]:
+        B = shapely.Polygon(square(dx, dy, 6), [square(dx + 1, dy + 1, 4)[::-1]])
+        E = mk.minkowski_difference(A, B)
+        assert E.equals(shapely.Polygon(square(1 - dx, 1 - dy, 2)))
+        assert check_by_oracle(A, B, E, np.random.default_rng(2), n=200) > 100
+
+
+def test_b_in_two_parts():
+    A = shapely.Polygon([(0, 0), (12, 0), (12, 3), (9, 3), (9, 8), (3, 8), (3, 3), (0, 3)])
+    B = shapely.MultiPolygon(
+        [shapely.Polygon(square(20, 20, 1)), shapely.Polygon(square(30, 20, 1))]
+    )
+    E = mk.minkowski_difference(A, B)
+    assert E.area > 0
+    assert check_by_oracle(A, B, E, np.random.default_rng(3), n=300) > 150

@@ -14,6 +14,8 @@ import numpy as np
 import pytest
 import shapely
 import shapely.errors
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 import minkowski2d as mk
 from minkowski2d import general
@@ -23,6 +25,8 @@ from minkowski2d.errors import (
     ResourceLimitError,
     ShapeError,
 )
+
+from .test_general import star_ring
 
 L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
 SCALES = [2.0**-1000, 1e-200, 1e-20, 1.0, 1e20, 1e155, 1e200, 2.0**344, 2.0**900]
@@ -264,3 +268,21 @@ def test_point_in_a_collection_is_refused_not_dropped():
     # a point or segment on its own is an operand like any other
     r = mk.minkowski_sum_general([(5, 5)], sq)
     assert r.equals(shapely.Polygon([(5, 5), (6, 5), (6, 6), (5, 6)]))
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
+@given(star_ring(max_n=8), star_ring(max_n=8), st.integers(-900, 900))
+def test_results_scale_exactly_by_powers_of_two(ra, rb, e):
+    """At s = 2**e every result is the result at s = 1 times s, bit for bit: GEOS sees the
+    same scaled operands either way."""
+    s = 2.0**e
+    for method in METHODS:
+        ref = mk.minkowski_sum_general(ra, rb, method=method)
+        r = mk.minkowski_sum_general(scaled(ra, s), scaled(rb, s), method=method)
+        same_times(r, ref, s)
+    ref = mk.minkowski_difference(ra, [(x + 7, y - 3) for x, y in rb])
+    r = mk.minkowski_difference(scaled(ra, s), scaled([(x + 7, y - 3) for x, y in rb], s))
+    if ref.is_empty:
+        assert r.is_empty
+    else:
+        same_times(r, ref, s)
