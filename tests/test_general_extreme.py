@@ -253,8 +253,9 @@ def test_convolution_limits(monkeypatch, limit):
         mk.minkowski_sum_general(L, L, method="convolution")
     assert e.value.argument == "a, b"
     monkeypatch.setattr(general, "MAX_PIECE_PAIRS", 1)
-    with pytest.raises(ResourceLimitError):  # default: nothing left to switch to
-        mk.minkowski_sum_general(L, L)
+    with pytest.raises(ResourceLimitError, match="both methods") as e:
+        mk.minkowski_sum_general(L, L)  # default: nothing left to switch to
+    assert e.value.argument == "a, b" and e.value.hint
 
 
 def test_point_in_a_collection_is_refused_not_dropped():

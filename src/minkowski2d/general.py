@@ -864,7 +864,17 @@ def _sum(A: _Operand, B: _Operand, method: str | None, decomposition: str) -> An
     if method == "convolution":
         return _sum_convolution(A, B)
     r = _sum_decomposition(A, B, decomposition, switch=method is None)
-    return _sum_convolution(A, B) if r is None else r
+    if r is not None:
+        return r
+    try:
+        return _sum_convolution(A, B)
+    except ResourceLimitError as exc:
+        raise ResourceLimitError(
+            f"{A.name}, {B.name}: both methods exceed their bounds: the decomposition "
+            f"has more than MAX_PIECE_PAIRS = {MAX_PIECE_PAIRS} piece sums, and {exc}",
+            argument=f"{A.name}, {B.name}",
+            hint="simplify the polygons (fewer reflex vertices)",
+        ) from exc
 
 
 # --------------------------------------------------------------------------------------
