@@ -287,3 +287,22 @@ def test_results_scale_exactly_by_powers_of_two(ra, rb, e):
         assert r.is_empty
     else:
         same_times(r, ref, s)
+
+
+def test_a_large_arrangement_is_refused_before_it_is_built():
+    # 256-vertex stars: over a million crossings (GEOS would need many GB and minutes);
+    # the bound is checked first, in seconds, with the default limits
+    k = np.arange(256)
+    th = 2 * np.pi * k / 256
+    A = np.rint(
+        np.c_[np.where(k % 2, 5000, 10000) * np.cos(th), np.where(k % 2, 5000, 10000) * np.sin(th)]
+    )
+    B = np.rint(
+        np.c_[
+            np.where(k % 2, 3000, 9000) * np.cos(th + 0.3),
+            np.where(k % 2, 3000, 9000) * np.sin(th + 0.3),
+        ]
+    )
+    with pytest.raises(ResourceLimitError, match="at least .* segment crossings") as e:
+        mk.minkowski_sum_general(A.astype(np.int64), B.astype(np.int64), method="convolution")
+    assert e.value.argument == "a, b" and "decomposition" in e.value.hint

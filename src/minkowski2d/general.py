@@ -712,8 +712,8 @@ def _convolution_faces(segs: np.ndarray) -> tuple[Any, np.ndarray]:
 
 def _convolution_limit(A: _Operand, B: _Operand, what: str, count: int, limit: int, name: str):
     return ResourceLimitError(
-        f"{A.name}, {B.name}: the convolution would need {count} {what}, above the limit "
-        f"{name} = {limit}",
+        f"{A.name}, {B.name}: the convolution would need at least {count} {what}, above "
+        f"the limit {name} = {limit}",
         argument=f"{A.name}, {B.name}",
         hint="use method='decomposition' (or leave method unset), or simplify the polygons",
     )
@@ -757,7 +757,7 @@ def _sum_convolution(A: _Operand, B: _Operand) -> Any:
         raise _convolution_limit(
             A,
             B,
-            "more than that many segment crossings",
+            "segment crossings",
             crossings,
             MAX_CONVOLUTION_CROSSINGS,
             "MAX_CONVOLUTION_CROSSINGS",
