@@ -17,7 +17,7 @@ import minkowski2d as mk
 
 from . import oracle
 from .strategies import convex_int
-from .test_general import star_ring
+from .test_general import DATA, read_dat, star_ring
 
 L_BIG = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]
 
@@ -241,3 +241,29 @@ def test_b_in_two_parts():
     E = mk.minkowski_difference(A, B)
     assert E.area > 0
     assert check_by_oracle(A, B, E, np.random.default_rng(3), n=300) > 150
+
+
+@pytest.mark.skipif(not DATA.is_dir(), reason="CGAL test polygons not found")
+@pytest.mark.parametrize(
+    ("p", "q"),
+    [
+        ("comb_part1", "small_robot"),
+        ("rooms_part1", "small_convex_robot"),
+        ("pwh4", "pwh2"),
+        ("knife_part1", "small_convex_robot"),
+    ],
+)
+def test_corpus_erosion_by_a_shifted_b(p, q):
+    """The corpus robots moved far off their origin: the erosion moves the other way and
+    still agrees with the oracle."""
+    a, b = read_dat(p), read_dat(q)
+    B = b if hasattr(b, "geom_type") else shapely.Polygon(b)
+    A = a if hasattr(a, "geom_type") else shapely.Polygon(a)
+    t = (1000.5, -731.25)
+    Bt = shapely.affinity.translate(B, *t)
+    E0 = mk.minkowski_difference(a, b)
+    E = mk.minkowski_difference(a, Bt)
+    assert E.is_empty == E0.is_empty
+    if not E.is_empty:
+        assert shapely.affinity.translate(E0, -t[0], -t[1]).hausdorff_distance(E) <= 1e-9 * 2000
+    check_by_oracle(A, Bt, E, np.random.default_rng(4), n=150)
