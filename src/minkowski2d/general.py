@@ -77,6 +77,14 @@ MAX_CONVOLUTION_TESTS = 1 << 24
 #: ... and at most this many pairs of convolution segments that meet (the arrangement:
 #: 128-vertex stars have 0.5 M and take 1.9 GB and 80 s; the CGAL corpus at most 12 422).
 MAX_CONVOLUTION_CROSSINGS = 1 << 20
+#: The convolution's only float tolerances (relative to the operands' extent, which the
+#: scale keeps near 2**20). CONE_SLACK widens the convex-vertex and normal-cone tests:
+#: every extra segment e + v still lies in the sum with the sum on its left, so a larger
+#: set is harmless. PROVENANCE_TOLERANCE matches a noded edge to the segments it lies on
+#: (distance and direction): GEOS rounds the crossing points, so the match cannot be an
+#: exact sign; two parallel segments closer than this could be confused.
+CONE_SLACK = 1e-12
+PROVENANCE_TOLERANCE = 1e-9
 
 
 def _boundary(argument: str, what: str):
@@ -651,7 +659,7 @@ def _rc_segments(P: np.ndarray, Q: np.ndarray) -> np.ndarray:
         return np.stack([P + Q[0], P1 + Q[0]], 1)
     f = np.roll(Q, -1, 0) - Q
     fin = np.roll(f, 1, 0)
-    scale = np.abs(e).max() * np.abs(f).max() * 1e-12
+    scale = np.abs(e).max() * np.abs(f).max() * CONE_SLACK
     turn = _cross(fin, f)
     k = np.flatnonzero(turn >= -scale)
     c1 = _cross(fin[k][None, :], e[:, None]) >= -scale
@@ -677,14 +685,14 @@ def _convolution_faces(segs: np.ndarray) -> tuple[Any, np.ndarray]:
         return faces, np.zeros(0, bool)
     # provenance: the segments each noded edge lies on, and their directions
     scale = max(np.abs(segs).max(), 1.0)
-    tol = scale * 1e-9
+    tol = scale * PROVENANCE_TOLERANCE
     mid = (ec[:, 0] + ec[:, 1]) / 2
     tree = shapely.STRtree(lines)
     ei, si = tree.query(shapely.points(mid), predicate="dwithin", distance=tol)
     de = ec[ei, 1] - ec[ei, 0]
     ds = segs[si, 1] - segs[si, 0]
     norm = np.linalg.norm(de, axis=1) * np.linalg.norm(ds, axis=1)
-    par = np.abs(_cross(de, ds)) <= 1e-9 * norm
+    par = np.abs(_cross(de, ds)) <= PROVENANCE_TOLERANCE * norm
     dot = (de * ds).sum(axis=1)
     fwd = np.zeros(len(ec), bool)
     bwd = np.zeros(len(ec), bool)
