@@ -1158,7 +1158,7 @@ def _erode_general(A: _Operand, B: _Operand) -> Any:
 
     ``G`` is the box ``bbox(A) ⊖ bbox(B)`` grown by a margin ``d``: the erosion lies in
     ``bbox(A) ⊖ bbox(B)``, because ``c + B ⊆ A`` puts ``c + bbox(B)`` inside ``bbox(A)``.
-    ``R = F \\ A`` with ``F`` the box ``bbox(A)`` grown by ``2 d`` (A's complement
+    ``R = F \\ A`` with ``F`` the box ``bbox(A)`` grown by ``4 d`` (A's complement
     within F). A point ``c`` of ``G`` is outside the erosion iff some ``c + b`` (b in B)
     is outside A; that point lies in ``G + B ⊆ bbox(A) ± d ⊆ F``, hence in ``R``, so
     ``c ∈ R ⊕ (−B)``. Conversely ``R ⊕ (−B)`` never meets the erosion. The margin only
