@@ -21,7 +21,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     )
     p.add_argument("a", help="polygon A (file or -)")
     p.add_argument("b", help="polygon B (file or -)")
-    p.add_argument("--method", choices=SUM_METHODS, default="decomposition")
+    p.add_argument("--method", choices=SUM_METHODS, default=None)
     p.add_argument(
         "--decomposition",
         choices=DECOMPOSITIONS,

@@ -19,13 +19,20 @@ Two methods compute ``A ⊕ B`` for simple polygons with holes and collections o
   one as a hole only if ``A`` does not meet ``x − B`` for a point ``x`` inside it.
 
 Both return a shapely Polygon or MultiPolygon (exterior rings counter-clockwise, holes
-clockwise, holes kept). Coordinates are float64 throughout: integer input up to 2**53
-is represented exactly, piece sums are exact for it, and GEOS computes the crossings of
-the final union in double precision.
+clockwise, holes kept). Coordinates are float64 throughout: integers with at most 53
+significant bits are represented exactly (others are refused), piece sums are exact for
+them, and GEOS computes the crossings of the final union in double precision. GEOS only
+ever sees the operands multiplied by one common power of two that puts their largest
+|coordinate| in ``[2**19, 2**20)``; the result is multiplied back (both exact), so tiny
+and huge magnitudes behave like magnitudes near 1. A shapely/GEOS failure surfaces as a
+:class:`~minkowski2d.errors.GeometryError` naming the operand; the work is bounded by
+``MAX_PIECE_PAIRS``, ``MAX_CONVOLUTION_TESTS`` and ``MAX_CONVOLUTION_CROSSINGS``
+(:class:`~minkowski2d.errors.ResourceLimitError`).
 
 :func:`minkowski_difference` is the erosion ``A ⊖ B = {c : c + B ⊆ A}``. It is *not*
 ``A ⊕ (−B)`` (that is :func:`minkowski2d.cspace_obstacle`, the set of translations
 where ``B`` *touches* ``A``); the erosion is the set where ``B`` fits *inside* ``A``.
+Neither operand needs to contain the origin.
 """
 
 from __future__ import annotations
@@ -39,7 +46,10 @@ from ._coerce import as_array
 from .batch import Ragged, minkowski_sum_many
 from .errors import (
     EmptyGeometryError,
+    GeometryError,
     NonFiniteError,
+    OverflowGeometryError,
+    ResourceLimitError,
     SelfIntersectionError,
     ShapeError,
 )
@@ -51,7 +61,93 @@ DECOMPOSITIONS = ("hertel-mehlhorn", "triangulation")
 
 
 # --------------------------------------------------------------------------------------
+# limits and scale
+
+#: The operands are scaled by one power of two so that the largest |coordinate| lies in
+#: ``[2**(SCALE_EXPONENT - 1), 2**SCALE_EXPONENT)`` while GEOS works on them.
+SCALE_EXPONENT = 20
+#: ``method="decomposition"``: at most this many convex piece sums (pieces of A times
+#: pieces of B). Beyond it the default method switches to the convolution, an explicit
+#: ``method="decomposition"`` raises ResourceLimitError. (The 2048-vertex stars of the
+#: benchmark need 1.59 M sums and 1.9 GB; the CGAL corpus at most 441.)
+MAX_PIECE_PAIRS = 1 << 21
+#: ``method="convolution"``: at most this many (edge, vertex) pairs tested (the sum of
+#: ``n * m`` over the ring pairs) ...
+MAX_CONVOLUTION_TESTS = 1 << 24
+#: ... and at most this many pairs of convolution segments that meet (the arrangement:
+#: 128-vertex stars have 0.5 M and take 1.9 GB and 80 s; the CGAL corpus at most 12 422).
+MAX_CONVOLUTION_CROSSINGS = 1 << 20
+#: The convolution's only float tolerances (relative to the operands' extent, which the
+#: scale keeps near 2**20). CONE_SLACK widens the convex-vertex and normal-cone tests:
+#: every extra segment e + v still lies in the sum with the sum on its left, so a larger
+#: set is harmless. PROVENANCE_TOLERANCE matches a noded edge to the segments it lies on
+#: (distance and direction): GEOS rounds the crossing points, so the match cannot be an
+#: exact sign; two parallel segments closer than this could be confused.
+CONE_SLACK = 1e-12
+PROVENANCE_TOLERANCE = 1e-9
+
+
+def _boundary(argument: str, what: str):
+    """Context manager: turn a shapely / GEOS / numpy failure into a GeometryError that
+    names ``argument`` (a GeometryError passes through unchanged)."""
+    from contextlib import contextmanager
+
+    import shapely.errors
+
+    @contextmanager
+    def cm():
+        try:
+            with np.errstate(over="raise", invalid="ignore"):
+                yield
+        except GeometryError:
+            raise
+        except MemoryError as exc:
+            raise ResourceLimitError(
+                f"{argument}: out of memory while {what}",
+                argument=argument,
+                hint="reduce the number of vertices (or of non-convex vertices)",
+            ) from exc
+        except (OverflowError, FloatingPointError) as exc:
+            raise OverflowGeometryError(
+                f"{argument}: a coordinate overflows float64 while {what} ({exc})",
+                argument=argument,
+                hint="the result does not fit in float64; scale the input down",
+            ) from exc
+        except (shapely.errors.ShapelyError, ValueError) as exc:
+            raise GeometryError(
+                f"{argument}: GEOS failed while {what} ({type(exc).__name__}: {exc})",
+                argument=argument,
+                hint="check that the input is a valid polygon; please report it if it is",
+            ) from exc
+
+    return cm()
+
+
+def _exponent(x: Any) -> int:
+    """``e`` with ``2**(e-1) <= |x| < 2**e`` for a nonzero int or Fraction (exact)."""
+    f = Fraction(x)
+    p, q = abs(f.numerator), f.denominator
+    e = p.bit_length() - q.bit_length()
+    # p / q lies in (2**(e-1), 2**(e+1)): one exact comparison settles it
+    return e + 1 if (p << max(-e, 0)) >= (q << max(e, 0)) else e
+
+
+def _max_exponent(coords: np.ndarray) -> int | None:
+    """frexp exponent of the largest finite |coordinate| (None if all are zero)."""
+    c = np.abs(np.asarray(coords, dtype=np.float64)).ravel()
+    c = c[np.isfinite(c)]
+    if c.size == 0 or c.max() == 0:
+        return None
+    return int(np.frexp(c.max())[1])
+
+
+# --------------------------------------------------------------------------------------
 # input
+#
+# Reading an operand is two passes: _parse checks the types and keeps the raw
+# coordinates (no GEOS call), _build scales them by 2**k and validates them with GEOS.
+# The exponent k is chosen from both operands together (the sum scales by the same
+# factor), so GEOS never sees coordinates whose products over- or underflow.
 
 
 class _Operand:
@@ -80,14 +176,187 @@ class _Operand:
         ring = shapely.get_coordinates(g.exterior)[:-1]
         return ring if check_convex(ring, self.name) else None
 
+    def hull(self) -> np.ndarray:
+        """Convex hull of the operand (exact, normalized)."""
+        if self.flat is not None:
+            return self.flat
+        import shapely
 
-def _float_coords(obj: Any, name: str) -> np.ndarray:
+        from .convex import convex_hull
+
+        return np.asarray(convex_hull(shapely.get_coordinates(self.geom)), dtype=np.float64)
+
+
+class _Raw:
+    """A parsed, not yet validated operand: a shapely Polygon/MultiPolygon (``geom``),
+    float64 coordinates (``coords``), exact coordinates (``exact``: Fractions, rounded
+    only after the exact scale) or a collection of them (``items``)."""
+
+    __slots__ = ("kind", "value", "name")
+
+    def __init__(self, kind: str, value: Any, name: str) -> None:
+        self.kind = kind
+        self.value = value
+        self.name = name
+
+    def exponent(self) -> int | None:
+        """frexp exponent of the largest |coordinate| (None when all are zero)."""
+        import shapely
+
+        if self.kind == "geom":
+            return _max_exponent(shapely.get_coordinates(self.value))
+        if self.kind == "coords":
+            return _max_exponent(self.value)
+        if self.kind == "exact":
+            es = [_exponent(v) for p in self.value for v in p if v != 0]
+            return max(es) if es else None
+        es = [e for item in self.value if (e := item.exponent()) is not None]
+        return max(es) if es else None
+
+
+_EXACT_INT = 1 << 53
+
+
+def _int_coords(arr: np.ndarray, name: str) -> np.ndarray:
+    """float64 copy of int coordinates; refuse an int that float64 cannot hold exactly."""
+    big = np.abs(arr.astype(np.float64)) >= _EXACT_INT
+    if big.any():
+        for k in np.flatnonzero(big.any(axis=1)):
+            for v in arr[k].tolist():
+                _check_int(int(v), name, int(k))
+    return arr.astype(np.float64)
+
+
+def _check_int(v: int, name: str, vertex: int) -> None:
+    if abs(v) >= _EXACT_INT and (v >> ((v & -v).bit_length() - 1)).bit_length() > 53:
+        raise GeometryError(
+            f"{name}: vertex {vertex} has the integer coordinate {v}, which float64 "
+            "cannot hold exactly (more than 53 significant bits); the general routines "
+            "compute in float64 and would round it",
+            argument=name,
+            vertex=vertex,
+            hint="round or scale the coordinates to at most 53 significant bits, "
+            "or use the exact convex routines",
+        )
+
+
+def _coords_raw(obj: Any, name: str) -> _Raw:
     data, kind = as_array(obj, name)
-    if isinstance(data, list):  # exact kinds: Fractions or huge ints, rounded once
-        data = np.array([(float(Fraction(x)), float(Fraction(y))) for x, y in data])
-        if not np.isfinite(data).all():
-            raise NonFiniteError(f"{name}: a coordinate does not fit in float64")
-    return np.asarray(data, dtype=np.float64)
+    if isinstance(data, list):  # exact kinds: Fractions or huge ints
+        for k, p in enumerate(data):
+            for v in p:
+                if isinstance(v, int):
+                    _check_int(v, name, k)
+        return _Raw("exact", [(Fraction(x), Fraction(y)) for x, y in data], name)
+    if data.dtype.kind == "i":
+        return _Raw("coords", _int_coords(data, name), name)
+    return _Raw("coords", np.asarray(data, dtype=np.float64), name)
+
+
+def _parse(obj: Any, name: str) -> _Raw:
+    """Check the type of one operand (see :func:`minkowski_sum_general`); no GEOS call."""
+    import shapely
+
+    if isinstance(obj, Ragged):
+        obj = obj.to_list()
+    mod = type(obj).__module__
+    if mod.startswith("shapely"):
+        gt = obj.geom_type
+        if gt in ("Polygon", "MultiPolygon"):
+            if obj.is_empty:
+                raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
+            return _Raw("geom", obj, name)
+        if gt == "GeometryCollection":
+            parts = shapely.get_parts(obj)
+            if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
+                raise ShapeError(
+                    f"{name}: a GeometryCollection may hold only polygons", argument=name
+                )
+            return _parse(list(parts), name)
+        return _coords_raw(obj, name)  # ring, line, points
+    if type(obj).__name__ == "UnboundedPolygon":
+        raise ShapeError(
+            f"{name}: the polygon has an unbounded outer boundary (CGAL N = 0); "
+            "its Minkowski sum is unbounded too",
+            argument=name,
+        )
+    if (
+        isinstance(obj, (list, tuple))
+        and obj
+        and (type(obj[0]).__module__.startswith("shapely") or np.ndim(obj[0]) == 2)
+    ):
+        # a collection of polygons: their union is the operand
+        return _Raw("items", [_parse(item, f"{name}[{k}]") for k, item in enumerate(obj)], name)
+    return _coords_raw(obj, name)
+
+
+def _scale_exponent(*raws: _Raw) -> int:
+    """The k of the common scale 2**k: the largest |coordinate| of all operands lands in
+    [2**(SCALE_EXPONENT - 1), 2**SCALE_EXPONENT). 0 when every coordinate is zero."""
+    es = [e for r in raws if (e := r.exponent()) is not None]
+    return SCALE_EXPONENT - max(es) if es else 0
+
+
+def _ldexp_geom(geom: Any, k: int) -> Any:
+    """``geom`` with every coordinate times 2**k (exact unless it under/overflows)."""
+    import shapely
+
+    if k == 0:
+        return geom
+    return shapely.transform(geom, lambda c: np.ldexp(c, k))
+
+
+def _build(raw: _Raw, k: int) -> _Operand:
+    """Scale a parsed operand by 2**k and validate it (GEOS runs on scaled values)."""
+    import shapely
+
+    name = raw.name
+    if raw.kind == "items":
+        geoms = []
+        for item in raw.value:
+            op = _build(item, k)
+            if op.flat is not None:
+                # uniting would drop it, yet {p} ⊕ B has area: refuse rather than lose it
+                raise ShapeError(
+                    f"{item.name}: a point or segment in a collection of polygons "
+                    "(every member of a collection must have area)",
+                    argument=item.name,
+                    hint="pass the point or segment as an operand of its own",
+                )
+            geoms.append(op.geom)
+        with _boundary(name, "uniting the polygons of the collection"):
+            u = shapely.get_parts(shapely.union_all(geoms))
+        polys = u[shapely.get_type_id(u) == 3]
+        if len(polys) == 0:
+            raise ShapeError(f"{name}: the polygons have no area", argument=name)
+        g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
+        return _Operand(_check_geom(g, name), None, name)
+    if raw.kind == "geom":
+        c = shapely.get_coordinates(raw.value)
+        if not np.isfinite(c).all():
+            raise NonFiniteError(f"{name}: a coordinate is not finite", argument=name)
+        return _Operand(_check_geom(_ldexp_geom(raw.value, k), name), None, name)
+    if raw.kind == "exact":
+        two = Fraction(2) ** k
+        ring = np.array([(float(x * two), float(y * two)) for x, y in raw.value])
+    else:
+        ring = np.ldexp(raw.value, k)
+    from .convex import convex_hull
+
+    hull = np.asarray(convex_hull(ring), dtype=np.float64)
+    if len(hull) <= 2:
+        # a point, a segment, or collinear points: a degenerate convex set
+        return _Operand(None, hull, name)
+    with _boundary(name, "building the polygon"):
+        poly = shapely.Polygon(ring)
+    return _Operand(_check_geom(poly, name), None, name)
+
+
+def _operands(*pairs: tuple[Any, str]) -> tuple[int, list[_Operand]]:
+    """Parse the operands, choose their common scale 2**k, build them scaled."""
+    raws = [_parse(obj, name) for obj, name in pairs]
+    k = _scale_exponent(*raws)
+    return k, [_build(r, k) for r in raws]
 
 
 def _check_geom(geom: Any, name: str) -> Any:
@@ -99,67 +368,21 @@ def _check_geom(geom: Any, name: str) -> Any:
     import shapely
 
     if geom.is_empty:
-        raise EmptyGeometryError(f"{name}: empty {geom.geom_type}")
+        raise EmptyGeometryError(f"{name}: empty {geom.geom_type}", argument=name)
     c = shapely.get_coordinates(geom)
     if not np.isfinite(c).all():
-        raise NonFiniteError(f"{name}: a coordinate is not finite")
-    if not shapely.is_valid(geom):
-        reason = shapely.is_valid_reason(geom)
-        if not reason.startswith("Interior is disconnected"):
-            raise SelfIntersectionError(f"{name}: not a valid polygon ({reason})")
-        geom = shapely.make_valid(geom, method="structure")
-    return shapely.orient_polygons(geom)
-
-
-def _operand(obj: Any, name: str) -> _Operand:
-    """Read one operand of a general sum or erosion (see :func:`minkowski_sum_general`)."""
-    import shapely
-
-    if isinstance(obj, _Operand):
-        return obj
-    if isinstance(obj, Ragged):
-        obj = obj.to_list()
-    mod = type(obj).__module__
-    if mod.startswith("shapely"):
-        gt = obj.geom_type
-        if gt in ("Polygon", "MultiPolygon"):
-            return _Operand(_check_geom(obj, name), None, name)
-        if gt == "GeometryCollection":
-            parts = shapely.get_parts(obj)
-            if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
-                raise ShapeError(f"{name}: a GeometryCollection may hold only polygons")
-            return _operand(list(parts), name)
-        obj = _float_coords(obj, name)  # ring, line, points
-    elif type(obj).__name__ == "UnboundedPolygon":
-        raise ShapeError(
-            f"{name}: the polygon has an unbounded outer boundary (CGAL N = 0); "
-            "its Minkowski sum is unbounded too"
-        )
-    elif (
-        isinstance(obj, (list, tuple))
-        and obj
-        and (type(obj[0]).__module__.startswith("shapely") or np.ndim(obj[0]) == 2)
-    ):
-        # a collection of polygons: their union is the operand
-        geoms = []
-        for k, item in enumerate(obj):
-            op = _operand(item, f"{name}[{k}]")
-            geoms.append(op.geom if op.flat is None else _flat_geom(op.flat))
-        u = shapely.union_all(geoms)
-        u = shapely.get_parts(u)
-        polys = u[shapely.get_type_id(u) == 3]
-        if len(polys) == 0:
-            raise ShapeError(f"{name}: the polygons have no area")
-        g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
-        return _Operand(_check_geom(g, name), None, name)
-    from .convex import convex_hull
-
-    ring = _float_coords(obj, name)
-    hull = np.asarray(convex_hull(ring), dtype=np.float64)
-    if len(hull) <= 2:
-        # a point, a segment, or collinear points: a degenerate convex set
-        return _Operand(None, hull, name)
-    return _Operand(_check_geom(shapely.Polygon(ring), name), None, name)
+        raise NonFiniteError(f"{name}: a coordinate is not finite", argument=name)
+    with _boundary(name, "validating the polygon"):
+        if not shapely.is_valid(geom):
+            reason = shapely.is_valid_reason(geom)
+            if not reason.startswith("Interior is disconnected"):
+                raise SelfIntersectionError(
+                    f"{name}: not a valid polygon ({reason})",
+                    argument=name,
+                    hint="the boundary must not cross itself; holes must lie inside",
+                )
+            geom = shapely.make_valid(geom, method="structure")
+        return shapely.orient_polygons(geom)
 
 
 def _flat_geom(flat: np.ndarray) -> Any:
@@ -168,6 +391,36 @@ def _flat_geom(flat: np.ndarray) -> Any:
     if len(flat) == 1:
         return shapely.Point(flat[0])
     return shapely.LineString(flat)
+
+
+def _unscale(geom: Any, k: int, argument: str) -> Any:
+    """Scale a result back by 2**-k; OverflowGeometryError if a coordinate overflows, or
+    if the whole result lies below 2**-1022 and gradual underflow rounds it.
+
+    The scale back is exact except where a coordinate falls below 2**-1022 (gradual
+    underflow rounds it to a multiple of 2**-1074); while the result's largest
+    |coordinate| is 2**-1022 or more, that is at most 2**-53 of its extent."""
+    import shapely
+
+    if k == 0 or geom.is_empty:
+        return geom
+    with np.errstate(over="ignore", under="ignore"):
+        out = shapely.transform(geom, lambda c: np.ldexp(c, -k))
+    c = shapely.get_coordinates(out)
+    if not np.isfinite(c).all():
+        raise OverflowGeometryError(
+            f"{argument}: the result overflows float64 (a coordinate beyond ±1.8e308)",
+            argument=argument,
+            hint="scale the input down; the result's coordinates must fit in float64",
+        )
+    if np.abs(c).max() < 2.0**-1022 and not (np.ldexp(c, k) == shapely.get_coordinates(geom)).all():
+        raise OverflowGeometryError(
+            f"{argument}: the result underflows float64 (all its coordinates are below "
+            "2**-1022 and would be rounded to multiples of 2**-1074)",
+            argument=argument,
+            hint="scale the input up; the result's coordinates must be float64 normals",
+        )
+    return out
 
 
 def _result(geom: Any) -> Any:
@@ -224,11 +477,15 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
         The polygon is not valid (its boundary crosses itself, a hole lies outside ...).
     ShapeError, EmptyGeometryError, NonFiniteError
         Bad input.
+    GeometryError
+        An integer coordinate has more than 53 significant bits, or GEOS failed.
 
     Notes
     -----
     Time O(n log n) for the triangulation and O(n) for the merge; every turn is decided
-    by the exact orientation predicate.
+    by the exact orientation predicate. GEOS triangulates the polygon scaled by a power
+    of two (largest |coordinate| in ``[2**19, 2**20)``); the pieces are scaled back, so
+    their vertices are the input vertices bit for bit at any magnitude.
 
     Examples
     --------
@@ -243,7 +500,13 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
     """
     if method not in DECOMPOSITIONS:
         raise ValueError(f"method must be one of {DECOMPOSITIONS}, got {method!r}")
-    return _pieces(_operand(poly, "poly"), method)
+    k, (P,) = _operands((poly, "poly"))
+    with _boundary("poly", "decomposing the polygon"):
+        R = _pieces(P, method)
+    if k == 0:
+        return R
+    # the pieces' vertices are input vertices: scaling back is exact and cannot overflow
+    return Ragged(np.ldexp(np.asarray(R.coords, dtype=np.float64), -k), R.offsets)
 
 
 def _ragged_polygons(coords: np.ndarray, off: np.ndarray) -> np.ndarray:
@@ -329,7 +592,9 @@ def _all_pairs(RA: Ragged, RB: Ragged) -> Ragged:
     return minkowski_sum_many(As, Bs)
 
 
-def _sum_decomposition(A: _Operand, B: _Operand, decomposition: str) -> Any:
+def _sum_decomposition(A: _Operand, B: _Operand, decomposition: str, switch: bool) -> Any:
+    """The sum by convex pieces; None when the pieces product exceeds MAX_PIECE_PAIRS
+    and ``switch`` lets the caller use the convolution instead."""
     import shapely
 
     from .convex import minkowski_sum
@@ -342,6 +607,16 @@ def _sum_decomposition(A: _Operand, B: _Operand, decomposition: str) -> Any:
         return shapely.Polygon(s)
     RA = _pieces(A, decomposition)
     RB = _pieces(B, decomposition)
+    pairs = len(RA) * len(RB)
+    if pairs > MAX_PIECE_PAIRS:
+        if switch:
+            return None
+        raise ResourceLimitError(
+            f"{A.name}, {B.name}: {len(RA)} x {len(RB)} convex pieces give {pairs} piece "
+            f"sums, above the limit MAX_PIECE_PAIRS = {MAX_PIECE_PAIRS}",
+            argument=f"{A.name}, {B.name}",
+            hint="leave method unset (it switches to the convolution), or simplify the polygons",
+        )
     sums = _all_pairs(RA, RB)
     return _union_rounds(sums, len(RA) + len(RB))
 
@@ -384,7 +659,7 @@ def _rc_segments(P: np.ndarray, Q: np.ndarray) -> np.ndarray:
         return np.stack([P + Q[0], P1 + Q[0]], 1)
     f = np.roll(Q, -1, 0) - Q
     fin = np.roll(f, 1, 0)
-    scale = np.abs(e).max() * np.abs(f).max() * 1e-12
+    scale = np.abs(e).max() * np.abs(f).max() * CONE_SLACK
     turn = _cross(fin, f)
     k = np.flatnonzero(turn >= -scale)
     c1 = _cross(fin[k][None, :], e[:, None]) >= -scale
@@ -410,14 +685,14 @@ def _convolution_faces(segs: np.ndarray) -> tuple[Any, np.ndarray]:
         return faces, np.zeros(0, bool)
     # provenance: the segments each noded edge lies on, and their directions
     scale = max(np.abs(segs).max(), 1.0)
-    tol = scale * 1e-9
+    tol = scale * PROVENANCE_TOLERANCE
     mid = (ec[:, 0] + ec[:, 1]) / 2
     tree = shapely.STRtree(lines)
     ei, si = tree.query(shapely.points(mid), predicate="dwithin", distance=tol)
     de = ec[ei, 1] - ec[ei, 0]
     ds = segs[si, 1] - segs[si, 0]
     norm = np.linalg.norm(de, axis=1) * np.linalg.norm(ds, axis=1)
-    par = np.abs(_cross(de, ds)) <= 1e-9 * norm
+    par = np.abs(_cross(de, ds)) <= PROVENANCE_TOLERANCE * norm
     dot = (de * ds).sum(axis=1)
     fwd = np.zeros(len(ec), bool)
     bwd = np.zeros(len(ec), bool)
@@ -443,14 +718,58 @@ def _convolution_faces(segs: np.ndarray) -> tuple[Any, np.ndarray]:
     return faces, inside
 
 
+def _convolution_limit(A: _Operand, B: _Operand, what: str, count: int, limit: int, name: str):
+    return ResourceLimitError(
+        f"{A.name}, {B.name}: the convolution would need at least {count} {what}, above "
+        f"the limit {name} = {limit}",
+        argument=f"{A.name}, {B.name}",
+        hint="use method='decomposition' (or leave method unset), or simplify the polygons",
+    )
+
+
+def _count_crossings(segs: np.ndarray, limit: int) -> int:
+    """Pairs of distinct segments that meet, counted in chunks; stops above ``limit``.
+
+    A chunk of ``c`` segments yields at most ``c * len(segs)`` pairs, so ``c`` is chosen
+    to keep that near ``limit`` (the count itself never needs more memory than that)."""
+    import shapely
+
+    lines = shapely.linestrings(segs)
+    tree = shapely.STRtree(lines)
+    step = max(1, min(4096, limit // max(len(lines), 1)))
+    total = 0
+    for i in range(0, len(lines), step):
+        chunk = lines[i : i + step]
+        total += len(tree.query(chunk, predicate="intersects")[0]) - len(chunk)
+        if total // 2 > limit:
+            break
+    return total // 2
+
+
 def _sum_convolution(A: _Operand, B: _Operand) -> Any:
     import shapely
 
     ra, rb = _rings(A), _rings(B)
+    tests = 2 * sum(len(p) * len(q) for p in ra for q in rb)
+    if tests > MAX_CONVOLUTION_TESTS:
+        raise _convolution_limit(
+            A, B, "edge-vertex tests", tests, MAX_CONVOLUTION_TESTS, "MAX_CONVOLUTION_TESTS"
+        )
     segs = [_rc_segments(p, q) for p in ra for q in rb] + [
         _rc_segments(q, p) for p in ra for q in rb
     ]
     segs = np.concatenate(segs)
+    segs = segs[(segs[:, 1] != segs[:, 0]).any(axis=1)]
+    crossings = _count_crossings(segs, MAX_CONVOLUTION_CROSSINGS)
+    if crossings > MAX_CONVOLUTION_CROSSINGS:
+        raise _convolution_limit(
+            A,
+            B,
+            "segment crossings",
+            crossings,
+            MAX_CONVOLUTION_CROSSINGS,
+            "MAX_CONVOLUTION_CROSSINGS",
+        )
     faces, inside = _convolution_faces(segs)
     cand = np.flatnonzero(~inside)
     if len(cand):
@@ -472,7 +791,7 @@ def _op_geom(op: _Operand) -> Any:
 
 
 def minkowski_sum_general(
-    a: Any, b: Any, *, method: str = "decomposition", decomposition: str = "hertel-mehlhorn"
+    a: Any, b: Any, *, method: str | None = None, decomposition: str = "hertel-mehlhorn"
 ) -> Any:
     """Minkowski sum of polygons that may be non-convex and have holes.
 
@@ -483,10 +802,11 @@ def minkowski_sum_general(
         polygons (a list of rings or shapely polygons; their union is the operand). A
         point, a segment or collinear points are taken as that degenerate convex set.
         Whatever :func:`minkowski2d.io.read_geometry` returns is accepted.
-    method : {"decomposition", "convolution"}
+    method : {"decomposition", "convolution"}, optional
         ``"decomposition"``: convex pieces, all pairs summed in one batch, GEOS union.
         ``"convolution"``: reduced convolution, GEOS arrangement, orientability and
-        hole filters. Both give the same set.
+        hole filters. Both give the same set. Unset (``None``): the decomposition, or
+        the convolution when the pieces product exceeds ``MAX_PIECE_PAIRS``.
     decomposition : {"hertel-mehlhorn", "triangulation"}
         The pieces used by ``method="decomposition"``.
 
@@ -505,12 +825,25 @@ def minkowski_sum_general(
         Both operands are points or segments, or an operand is unbounded.
     EmptyGeometryError, NonFiniteError, CoordinateTypeError
         Bad input.
+    GeometryError
+        An integer coordinate has more than 53 significant bits (float64 would round
+        it), or GEOS failed (the message names the operand or ``"a, b"``).
+    OverflowGeometryError
+        The sum has a coordinate beyond the float64 range.
+    ResourceLimitError
+        The work exceeds ``MAX_PIECE_PAIRS`` (explicit decomposition) or
+        ``MAX_CONVOLUTION_TESTS`` / ``MAX_CONVOLUTION_CROSSINGS`` (convolution).
 
     Notes
     -----
-    Work in float64 (GEOS): integer coordinates up to 2**53 are exact, every convex
-    piece sum is exact for them, and the union's crossing points are rounded once.
-    Exact inputs (Fractions, huge ints) are rounded to float64 first.
+    Both operands are multiplied by one power of two, ``2**k``, chosen so that their
+    largest |coordinate| lies in ``[2**19, 2**20)``; GEOS works on the scaled values and
+    the result is multiplied by ``2**-k``. Both scalings are exact in binary floating
+    point (barring gradual underflow below 2**-1022), so any magnitude from 2**-1074 to
+    the float64 limit is computed as well as magnitudes near 1. Integer coordinates with
+    at most 53 significant bits are exact, every convex piece sum is exact for them, and
+    the union's crossing points are rounded once (relative error about 2**-52 of the
+    result's extent). Fractions are rounded to float64 once, after the exact scale.
 
     Examples
     --------
@@ -522,17 +855,36 @@ def minkowski_sum_general(
     >>> mk.minkowski_sum_general(L, L, method="convolution").wkt
     'POLYGON ((0 0, 4 0, 4 2, 3 2, 3 3, 2 3, 2 4, 0 4, 0 0))'
     """
-    if method not in SUM_METHODS:
+    if method is not None and method not in SUM_METHODS:
         raise ValueError(f"method must be one of {SUM_METHODS}, got {method!r}")
     if decomposition not in DECOMPOSITIONS:
         raise ValueError(f"decomposition must be one of {DECOMPOSITIONS}, got {decomposition!r}")
-    A = _operand(a, "a")
-    B = _operand(b, "b")
+    k, (A, B) = _operands((a, "a"), (b, "b"))
+    with _boundary("a, b", "computing the sum"):
+        r = _result(_sum(A, B, method, decomposition))
+    return _unscale(r, k, "a, b")
+
+
+def _sum(A: _Operand, B: _Operand, method: str | None, decomposition: str) -> Any:
+    """``A ⊕ B`` of validated (scaled) operands, not yet cleaned by :func:`_result`."""
     if A.flat is not None and B.flat is not None:
-        raise ShapeError("both operands are points or segments: the sum has no area")
+        raise ShapeError(
+            "both operands are points or segments: the sum has no area", argument="a, b"
+        )
     if method == "convolution":
-        return _result(_sum_convolution(A, B))
-    return _result(_sum_decomposition(A, B, decomposition))
+        return _sum_convolution(A, B)
+    r = _sum_decomposition(A, B, decomposition, switch=method is None)
+    if r is not None:
+        return r
+    try:
+        return _sum_convolution(A, B)
+    except ResourceLimitError as exc:
+        raise ResourceLimitError(
+            f"{A.name}, {B.name}: both methods exceed their bounds: the decomposition "
+            f"has more than MAX_PIECE_PAIRS = {MAX_PIECE_PAIRS} piece sums, and {exc}",
+            argument=f"{A.name}, {B.name}",
+            hint="simplify the polygons (fewer reflex vertices)",
+        ) from exc
 
 
 # --------------------------------------------------------------------------------------
@@ -713,16 +1065,6 @@ def _from_exact_points(pts: list) -> Any:
     return shapely.Polygon(out)
 
 
-def _erode_fallback(A: np.ndarray, B: np.ndarray) -> Any:
-    """Erosion as the intersection of the translates A − b (used for rare degenerate
-    configurations of the exact convex pass)."""
-    import shapely
-
-    pa = shapely.Polygon(A)
-    pieces = [shapely.affinity.translate(pa, -x, -y) for x, y in B.tolist()]
-    return shapely.intersection_all(pieces)
-
-
 def minkowski_difference(a: Any, b: Any) -> Any:
     """Minkowski difference (erosion) ``A ⊖ B = {c : c + B ⊆ A}``.
 
@@ -740,19 +1082,38 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     Returns
     -------
     shapely geometry
-        * convex ``a`` and convex ``b`` (no holes): computed exactly in O(n + m) — a
-          Polygon, or a LineString / Point when the erosion is a segment or a single
-          point (``A ⊖ A`` is the point at the origin);
-        * otherwise: ``A ⊖ B = complement(complement(A) ⊕ (−B))`` with the general sum,
-          a Polygon or MultiPolygon (the closure of the erosion's interior: parts of
-          zero width are not represented);
+        * convex ``a`` (no holes), any ``b``: computed exactly (``c + B ⊆ A`` iff
+          ``c + hull(B) ⊆ A``) in O(n + m log m) — a Polygon, or a LineString / Point
+          when the erosion is a segment or a single point (``A ⊖ A`` is the point at
+          the origin). This is the inner-fit polygon of a part in a convex sheet;
+        * otherwise: ``A ⊖ B = complement(complement(A) ⊕ (−B))``, computed as
+          ``G \\ ((F \\ A) ⊕ (−B))`` with the box ``G ⊇ bbox(A) ⊖ bbox(B)`` and the
+          box ``F ⊇ G ⊕ B`` (see the notes), a Polygon or MultiPolygon (the closure of
+          the erosion's interior: parts of zero width are not represented);
         * when ``B`` fits nowhere inside ``A``: an empty Polygon (``POLYGON EMPTY``,
           ``result.is_empty`` is True).
+
+        Neither operand needs to contain the origin: ``A ⊖ (B + t) = (A ⊖ B) − t``.
 
     Raises
     ------
     SelfIntersectionError, ShapeError, EmptyGeometryError, NonFiniteError
         Bad input (``a`` must have area).
+    GeometryError
+        An integer coordinate has more than 53 significant bits, or GEOS failed.
+    OverflowGeometryError
+        The erosion has a coordinate beyond the float64 range (or lies wholly below
+        2**-1022, where float64 cannot hold it to full precision).
+    ResourceLimitError
+        The inner sum exceeds the bounds of :func:`minkowski_sum_general`.
+
+    Notes
+    -----
+    The erosion lies in ``bbox(A) ⊖ bbox(B)`` (``c + B ⊆ A`` puts ``c + bbox(B)`` in
+    ``bbox(A)``). ``G`` is that box grown by a margin; every ``c + b`` with ``c ∈ G``
+    lies in ``F``, so ``c`` misses the erosion exactly when ``c + b ∈ F \\ A`` for some
+    ``b ∈ B``. Like the sum, the erosion is computed on operands scaled by one power of
+    two (exact), so every magnitude representable in float64 works alike.
 
     Examples
     --------
@@ -764,30 +1125,61 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     'LINESTRING (0 0, 0 2)'
     >>> mk.minkowski_difference(sq, [(0, 0), (5, 0), (0, 5)]).is_empty
     True
+    >>> L = [(0, 0), (4, 0), (4, 2), (2, 2), (2, 4), (0, 4)]
+    >>> mk.minkowski_difference(L, [(10, 10), (11, 10), (11, 11), (10, 11)]).area
+    5.0
     >>> mk.cspace_obstacle(sq, [(0, 0), (1, 0), (1, 1), (0, 1)]).tolist()  # not the same
     [[-1, -1], [4, -1], [4, 4], [-1, 4]]
     """
-    import shapely
-
-    A = _operand(a, "a")
-    B = _operand(b, "b")
+    k, (A, B) = _operands((a, "a"), (b, "b"))
     if A.flat is not None:
-        raise ShapeError("a: the region to erode must have area (got a point or segment)")
-    ra, rb = A.convex_ring, B.convex_ring
-    if ra is not None and rb is not None:
+        raise ShapeError(
+            "a: the region to erode must have area (got a point or segment)", argument="a"
+        )
+    with _boundary("a, b", "computing the erosion"):
+        E = _erode(A, B)
+    return _unscale(E, k, "a, b")
+
+
+def _erode(A: _Operand, B: _Operand) -> Any:
+    """``A ⊖ B`` of validated (scaled) operands."""
+    ra = A.convex_ring
+    if ra is not None:
+        # c + B ⊆ A  ⟺  c + hull(B) ⊆ A for a convex A: the exact convex erosion
         from .convex import normalize
 
         na = np.asarray(normalize(ra), dtype=np.float64)
-        nb = np.asarray(normalize(rb), dtype=np.float64)
-        return _erode_convex(na, nb)
+        return _erode_convex(na, B.hull())
+    return _result(_erode_general(A, B))
+
+
+def _erode_general(A: _Operand, B: _Operand) -> Any:
+    """``A ⊖ B = G \\ (R ⊕ (−B))`` for any A and B (neither needs to hold the origin).
+
+    ``G`` is the box ``bbox(A) ⊖ bbox(B)`` grown by a margin ``d``: the erosion lies in
+    ``bbox(A) ⊖ bbox(B)``, because ``c + B ⊆ A`` puts ``c + bbox(B)`` inside ``bbox(A)``.
+    ``R = F \\ A`` with ``F`` the box ``bbox(A)`` grown by ``4 d`` (A's complement
+    within F). A point ``c`` of ``G`` is outside the erosion iff some ``c + b`` (b in B)
+    is outside A; that point lies in ``G + B ⊆ bbox(A) ± d ⊆ F``, hence in ``R``, so
+    ``c ∈ R ⊕ (−B)``. Conversely ``R ⊕ (−B)`` never meets the erosion. The margin only
+    absorbs the rounding of the box corners (the operands are scaled to |x| < 2**20).
+    """
+    import shapely
+
     ga = A.geom
     gb = _op_geom(B)
-    lo = np.minimum(shapely.bounds(ga)[:2], shapely.bounds(gb)[:2])
-    hi = np.maximum(shapely.bounds(ga)[2:], shapely.bounds(gb)[2:])
-    span = float((hi - lo).max())
-    pad = 2.0 * span + 1.0
-    box = shapely.box(*(shapely.bounds(ga)[:2] - pad), *(shapely.bounds(ga)[2:] + pad))
-    comp = shapely.difference(box, ga)
-    nb = shapely.affinity.scale(gb, -1.0, -1.0, origin=(0, 0))
-    grown = minkowski_sum_general(comp, nb if B.flat is None else -B.flat)
-    return _result(shapely.difference(ga, grown))
+    ax0, ay0, ax1, ay1 = shapely.bounds(ga).tolist()
+    bx0, by0, bx1, by1 = shapely.bounds(gb).tolist()
+    F_ = Fraction
+    if F_(bx1) - F_(bx0) > F_(ax1) - F_(ax0) or F_(by1) - F_(by0) > F_(ay1) - F_(ay0):
+        return shapely.Polygon()  # B is wider or taller than A: it fits nowhere
+    d = 1.0
+    G = shapely.box(ax0 - bx0 - d, ay0 - by0 - d, ax1 - bx1 + d, ay1 - by1 + d)
+    F = shapely.box(ax0 - 4 * d, ay0 - 4 * d, ax1 + 4 * d, ay1 + 4 * d)
+    R = _Operand(shapely.orient_polygons(shapely.difference(F, ga)), None, A.name)
+    if B.flat is not None:
+        nB = _Operand(None, -B.flat, B.name)
+    else:
+        nB = _Operand(shapely.orient_polygons(shapely.transform(gb, lambda c: -c)), None, B.name)
+    grown = _result(_sum(R, nB, None, "hertel-mehlhorn"))
+    return shapely.difference(G, grown)
