@@ -172,7 +172,8 @@ class SelfIntersectionError(GeometryError):
 
 
 class OverflowGeometryError(GeometryError):
-    """A float result does not fit in float64 (it would be infinite)."""
+    """A float result does not fit in float64: it would be infinite, or (for results
+    computed at a power-of-two scale and scaled back) it would underflow."""
 
 
 class InputFormatError(GeometryError):
