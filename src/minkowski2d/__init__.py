@@ -45,6 +45,11 @@ def __getattr__(name: str) -> Any:
         from .animation import animate
 
         return animate
+    if name == "plot":
+        import importlib
+
+        # a callable module: mk.plot(obj, ax=None, **kwargs); matplotlib loads on drawing
+        return importlib.import_module(".plot", __name__)
     raise AttributeError(f"module 'minkowski2d' has no attribute {name!r}")
 
 
@@ -64,6 +69,7 @@ __all__ = [
     "merge_trace",
     "MergeTrace",
     "animate",
+    "plot",
     "minkowski_sum_general",
     "convex_decomposition",
     "minkowski_difference",
