@@ -18,7 +18,7 @@ from . import _dispatch as D
 from ._coerce import as_array
 from ._containers import apply, boxed
 from ._core import _ext
-from ._types import ArrayLike2
+from ._types import ArrayLike2, PolygonsLike, ProgressLike
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -461,7 +461,9 @@ def as_ragged_pair(
     return RA, a_lo, a_hi, RB, b_lo, b_hi, P, ("As" if many_a else "a", "Bs" if many_b else "b")
 
 
-def minkowski_sum_many(As: Any, Bs: Any, *, threads: int = 1, progress: Any = None) -> Any:
+def minkowski_sum_many(
+    As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
+) -> Any:
     """Minkowski sums of many pairs of convex polygons in one call.
 
     Parameters

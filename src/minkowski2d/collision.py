@@ -40,7 +40,7 @@ import numpy as np
 from ._coerce import INT, as_array
 from ._containers import apply, boxed
 from ._core import _ext
-from ._types import ArrayLike2
+from ._types import ArrayLike2, PolygonsLike, ProgressLike
 from .errors import NonFiniteError, NotConvexError, OverflowGeometryError, ShapeError
 
 __all__ = [
@@ -422,7 +422,12 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
 
 
 def intersects_many(
-    As: Any, Bs: Any, *, method: str = "auto", threads: int = 1, progress: Any = None
+    As: PolygonsLike,
+    Bs: PolygonsLike,
+    *,
+    method: str = "auto",
+    threads: int = 1,
+    progress: ProgressLike = None,
 ) -> Any:
     """:func:`intersects` for many pairs: pairwise, or one polygon against many.
 
@@ -465,7 +470,9 @@ def intersects_many(
     return hit
 
 
-def distance_many(As: Any, Bs: Any, *, threads: int = 1, progress: Any = None) -> Any:
+def distance_many(
+    As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
+) -> Any:
     """:func:`distance` for many pairs (pairwise or one against many).
 
     ``threads`` splits the pairs over that many threads, and ``progress`` reports, as in
@@ -493,7 +500,9 @@ def distance_many(As: Any, Bs: Any, *, threads: int = 1, progress: Any = None) -
     return Distance(res[:, 0].copy(), res[:, 3:5].copy(), res[:, 5:7].copy())
 
 
-def penetration_many(As: Any, Bs: Any, *, threads: int = 1, progress: Any = None) -> Any:
+def penetration_many(
+    As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
+) -> Any:
     """:func:`penetration` for many pairs (pairwise or one against many).
 
     ``threads`` splits the pairs over that many threads, and ``progress`` reports, as in
