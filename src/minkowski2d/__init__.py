@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from . import errors
+from ._version import __version__
 from .batch import Ragged, minkowski_sum_many
 from .collision import (
     Distance,
@@ -35,8 +36,6 @@ from .convex import (
 from .errors import GeometryError
 from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
 from .trace import MergeTrace, merge_trace
-
-__version__ = "0.1.0"
 
 
 def __getattr__(name: str) -> Any:
