@@ -21,7 +21,6 @@ from ._core import _ext
 from ._types import ArrayLike2, PolygonsLike, ProgressLike
 from .errors import (
     EmptyGeometryError,
-    GeometryError,
     NonFiniteError,
     NotConvexError,
     ShapeError,
@@ -127,26 +126,16 @@ class Ragged:
                 argument=f"{name}[{k}]",
                 hint="split multi-part geometries into their parts first",
             )
-        if len(geoms) and (types == 3).all():
-            nh = shapely.get_num_interior_rings(geoms)
-            if not (nh > 0).any():
-                try:
-                    r = cls.from_ragged_array(*shapely.to_ragged_array(geoms))
-                except GeometryError:
-                    pass
-                else:
-                    if not (r.lengths == 0).any():
-                        return r
         polys = types == 3
         if polys.any():
             nh = shapely.get_num_interior_rings(geoms[polys])
             if (nh > 0).any():
                 k = int(np.flatnonzero(polys)[np.flatnonzero(nh > 0)[0]])
                 raise ShapeError(f"{name}[{k}]: polygon has holes; Ragged holds simple rings")
-        rings = np.where(polys, shapely.get_exterior_ring(geoms), geoms)
-        coords, index = shapely.get_coordinates(rings, return_index=True)
+        # without holes a polygon's coordinates are its exterior ring's: no ring objects
+        coords, index = shapely.get_coordinates(geoms, return_index=True)
         counts = np.bincount(index, minlength=len(geoms)).astype(np.int64)
-        closed = np.isin(shapely.get_type_id(rings), (2,)) & (counts > 1)
+        closed = np.isin(types, (2, 3)) & (counts > 1)
         # drop the closing vertex of each ring
         ends = np.cumsum(counts)
         drop = np.zeros(len(coords), bool)
