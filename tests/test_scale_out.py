@@ -56,6 +56,21 @@ def warm() -> int:
     return os.getpid()
 
 
+def _warm_plugin():
+    from distributed import WorkerPlugin
+
+    class WarmCore(WorkerPlugin):
+        """docs/scale-out.md's plugin: a warm core on every worker, also later ones."""
+
+        def setup(self, worker):
+            import minkowski2d
+
+            minkowski2d.minkowski_sum([(0, 0), (1, 0), (0, 1)], [(0, 0), (1, 1)])
+            worker.minkowski2d_warm = True
+
+    return WarmCore()
+
+
 def test_dask_local_cluster_matches_one_process(tmp_path):
     pytest.importorskip("distributed", reason="dask[distributed] is not installed (extra 'dask')")
     dask_geopandas = pytest.importorskip(
@@ -79,6 +94,8 @@ def test_dask_local_cluster_matches_one_process(tmp_path):
         ) as cluster,
         Client(cluster) as client,
     ):
+        client.register_plugin(_warm_plugin())
+        assert all(client.run(lambda dask_worker: dask_worker.minkowski2d_warm).values())
         pids = client.run(warm)
         assert len(set(pids.values())) == 2 and os.getpid() not in pids.values()
         sizes = client.gather(client.map(make_part, range(PARTS), folder=str(src)))
