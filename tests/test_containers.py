@@ -146,3 +146,24 @@ def test_progress_callback_and_bar(capsys):
     assert "1000/1000" in err or "pair" in err
     with pytest.raises(TypeError, match="progress"):
         mk.minkowski_sum_many(polys, ROBOT, progress="yes")
+
+
+def test_a_general_function_adopts_apply_in_one_call():
+    """How minkowski_sum_general_many / offset (built elsewhere) plug in: ``convex=False``
+    lets holes and MultiPolygons through; the result is boxed the same way."""
+    gpd = pytest.importorskip("geopandas", reason="geopandas is not installed (extra 'geo')")
+    from functools import partial
+
+    from minkowski2d._containers import apply
+
+    def general_many(As, Bs, *, scale):
+        return [shapely.affinity.scale(a, scale, scale) for a in As]
+
+    holed = shapely.box(0, 0, 9, 9).difference(shapely.box(3, 3, 6, 6))
+    multi = shapely.MultiPolygon(list(_boxes(2)))
+    gs = gpd.GeoSeries([holed, None, multi], index=[3, 4, 5], crs=3857)
+    out = apply(partial(general_many, scale=2.0), gs, ROBOT, convex=False)
+    assert isinstance(out, gpd.GeoSeries) and out.crs == gs.crs and out.index.tolist() == [3, 4, 5]
+    assert out[3].area == 4 * holed.area and out[4] is None and out[5].geom_type == "MultiPolygon"
+    one = apply(lambda As: [a.buffer(1) for a in As], gs, convex=False, names=("polygons",))
+    assert one[4] is None and one[3].area > holed.area
