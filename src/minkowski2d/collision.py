@@ -472,7 +472,7 @@ def intersects_many(
 
 def distance_many(
     As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
-) -> Any:
+) -> Distance:
     """:func:`distance` for many pairs (pairwise or one against many).
 
     ``threads`` splits the pairs over that many threads, and ``progress`` reports, as in
@@ -502,7 +502,7 @@ def distance_many(
 
 def penetration_many(
     As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
-) -> Any:
+) -> Penetration:
     """:func:`penetration` for many pairs (pairwise or one against many).
 
     ``threads`` splits the pairs over that many threads, and ``progress`` reports, as in
