@@ -158,6 +158,8 @@ def test_ragged_concat_equality_and_size():
     assert sys.getsizeof(big) >= big.coords.nbytes + big.offsets.nbytes  # 12.8 MB + 1.6 MB
     with pytest.raises(TypeError):
         hash(r)
+    dask_sizeof = pytest.importorskip("dask.sizeof", reason="dask is not installed (extra 'dask')")
+    assert dask_sizeof.sizeof(big) == sys.getsizeof(big) > 14_000_000
 
 
 def test_ragged_geoarrow_round_trip():

@@ -35,6 +35,12 @@ _NONFINITE = int(D.Status.NONFINITE)
 class Ragged:
     """P polygons stored flat: ``coords`` (N, 2) and ``offsets`` (P + 1,).
 
+    ``r[k]`` is polygon k (a view); ``r[2:9]`` (a view), ``r[[4, 0]]`` and ``r[mask]`` are
+    Raggeds; :meth:`concat` joins them; ``==`` compares values; ``sys.getsizeof`` counts
+    the arrays; pickling (protocol 5) passes the arrays out of band; :meth:`to_shapely`,
+    :meth:`from_shapely`, :meth:`to_ragged_array` and :meth:`from_ragged_array` convert to
+    and from shapely (the GeoArrow layout of :func:`shapely.to_ragged_array`).
+
     Parameters
     ----------
     coords : (N, 2) int64 or float64 ndarray
