@@ -130,7 +130,9 @@ class Ragged:
             raise ShapeError(
                 f"{name}[{k}]: a {what} is not one polygon, ring or point set",
                 argument=f"{name}[{k}]",
-                hint="split multi-part geometries into their parts first",
+                hint="pass a numpy object array or a GeoSeries to keep None members"
+                if types[k] < 0
+                else "split multi-part geometries into their parts first",
             )
         polys = types == 3
         if polys.any():
