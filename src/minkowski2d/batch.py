@@ -18,7 +18,7 @@ from . import _dispatch as D
 from ._coerce import as_array
 from ._containers import apply, boxed
 from ._core import _ext
-from ._types import ArrayLike2, PolygonsLike, ProgressLike
+from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
     EmptyGeometryError,
     NonFiniteError,
@@ -458,6 +458,18 @@ def as_ragged_pair(
     return RA, a_lo, a_hi, RB, b_lo, b_hi, P, ("As" if many_a else "a", "Bs" if many_b else "b")
 
 
+@overload
+def minkowski_sum_many(
+    As: Ragged | Sequence[ArrayLike2],
+    Bs: Ragged | Sequence[ArrayLike2] | Sequence[Sequence[Coordinate]] | GeometryLike,
+    *,
+    threads: int = 1,
+    progress: ProgressLike = None,
+) -> Ragged: ...
+@overload
+def minkowski_sum_many(
+    As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
+) -> Any: ...
 def minkowski_sum_many(
     As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
 ) -> Any:

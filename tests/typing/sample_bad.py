@@ -8,3 +8,4 @@ mk.minkowski_sum(1, 2)  # E: numbers are not polygons
 mk.minkowski_sum([(0, 0)], [(1, 1)], hull="yes")  # E: hull is a bool
 mk.intersects("abc", [(0, 0)])  # E: a string is not a polygon
 mk.minkowski_sum_many([[(0, 0)]], [(1, 1)], threads="2")  # E: threads is an int
+wrong: int = mk.minkowski_sum_many([[(0, 0)]], [(1, 1)])  # E: lists in give a Ragged
