@@ -2,8 +2,12 @@
 
 from __future__ import annotations
 
+import pickle
+import sys
+
 import numpy as np
 import pytest
+import shapely
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -76,8 +80,12 @@ def test_shapely_arrays_as_operands():
     shapely = pytest.importorskip("shapely")
     squares = shapely.box(np.arange(5.0), 0, np.arange(5.0) + 1, 1)
     r = mk.minkowski_sum_many(squares, [(0, 0), (1, 0), (0, 1)])
+    # an object array in, an object array of shapely geometries out (issue 13)
+    assert isinstance(r, np.ndarray) and r.dtype == object and r.shape == (5,)
     for k in range(5):
-        assert r[k].tolist() == mk.minkowski_sum(squares[k], [(0, 0), (1, 0), (0, 1)]).tolist()
+        want = mk.minkowski_sum(squares[k], [(0, 0), (1, 0), (0, 1)])
+        assert shapely.get_coordinates(r[k])[:-1].tolist() == want.tolist()
+    r = mk.minkowski_sum_many(list(squares), [(0, 0), (1, 0), (0, 1)])  # a list: a Ragged
     assert all(p.area > 0 for p in r.to_shapely())
 
 
@@ -110,3 +118,71 @@ def test_errors_name_the_polygon():
 def test_empty_batch():
     r = mk.minkowski_sum_many([], [])
     assert len(r) == 0
+
+
+# --------------------------------------------------------------------------------------
+# Ragged as a container (issue 13): slicing, concat, equality, size, GeoArrow, pickling
+
+
+def _ragged(n: int = 50, seed: int = 0) -> mk.Ragged:
+    rng = np.random.default_rng(seed)
+    return mk.Ragged.from_list(
+        [rng.integers(-100, 100, (int(rng.integers(1, 9)), 2)) for _ in range(n)]
+    )
+
+
+def test_ragged_slicing_and_fancy_indexing():
+    r = _ragged()
+    lists = [a.tolist() for a in r]
+    for key in (slice(3, 9), slice(None, None, -3), slice(40, 10), [4, 0, 4, -1], np.arange(0)):
+        s = r[key]
+        assert isinstance(s, mk.Ragged)
+        want = [lists[i] for i in np.arange(len(r))[key]]
+        assert [a.tolist() for a in s] == want
+    mask = r.lengths > 4
+    assert [a.tolist() for a in r[mask]] == [x for x, m in zip(lists, mask) if m]
+    assert np.shares_memory(r[5:10].coords, r.coords)  # a slice is a view
+    with pytest.raises(IndexError):
+        r[[0, 50]]
+    with pytest.raises(IndexError):
+        r[np.ones(3, bool)]
+
+
+def test_ragged_concat_equality_and_size():
+    r = _ragged()
+    assert mk.Ragged.concat([r[:20], r[20:20], r[20:]]) == r
+    assert r != r[1:] and r != _ragged(seed=1)
+    assert (r == "x") is False
+    assert mk.Ragged.concat([]) == mk.Ragged.from_list([])
+    big = mk.Ragged(np.zeros((800_000, 2)), np.arange(0, 800_001, 4))
+    assert sys.getsizeof(big) >= big.coords.nbytes + big.offsets.nbytes  # 12.8 MB + 1.6 MB
+    with pytest.raises(TypeError):
+        hash(r)
+    dask_sizeof = pytest.importorskip("dask.sizeof", reason="dask is not installed (extra 'dask')")
+    assert dask_sizeof.sizeof(big) == sys.getsizeof(big) > 14_000_000
+
+
+def test_ragged_geoarrow_round_trip():
+    r = mk.Ragged.from_list([[(0, 0), (3, 0), (3, 1)], [(5, 5), (6, 5), (6, 6), (5, 6)]])
+    t, coords, offsets = r.to_ragged_array()
+    g = shapely.from_ragged_array(t, coords, offsets)
+    assert [x.wkt for x in g] == [x.wkt for x in r.to_shapely()]
+    assert shapely.to_ragged_array(g)[1].tolist() == coords.tolist()
+    back = mk.Ragged.from_ragged_array(*shapely.to_ragged_array(g))
+    assert back == r
+    with pytest.raises(mk.errors.NotConvexError, match="holes"):
+        mk.Ragged.from_ragged_array(
+            *shapely.to_ragged_array([shapely.box(0, 0, 9, 9).difference(shapely.box(1, 1, 2, 2))])
+        )
+
+
+def test_ragged_pickle_is_zero_copy():
+    r = _ragged()
+    buffers: list = []
+    data = pickle.dumps(r, protocol=5, buffer_callback=buffers.append)
+    assert len(buffers) == 2 and len(data) < 300  # the arrays travel out of band
+    back = pickle.loads(data, buffers=buffers)
+    assert back == r and back.coords.dtype == r.coords.dtype
+    assert np.shares_memory(back.coords, r.coords)
+    for proto in (2, 4, 5):
+        assert pickle.loads(pickle.dumps(r[3:7], protocol=proto)) == r[3:7]

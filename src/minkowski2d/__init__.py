@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any
 
 from . import errors
+from ._version import __version__
 from .batch import Ragged, minkowski_sum_many
 from .collision import (
     Distance,
@@ -36,8 +37,6 @@ from .errors import GeometryError
 from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
 from .trace import MergeTrace, merge_trace
 
-__version__ = "0.1.0"
-
 
 def __getattr__(name: str) -> Any:
     # the page template and server load only when used (import time matters for CLIs)
@@ -45,6 +44,11 @@ def __getattr__(name: str) -> Any:
         from .animation import animate
 
         return animate
+    if name == "plot":
+        import importlib
+
+        # a callable module: mk.plot(obj, ax=None, **kwargs); matplotlib loads on drawing
+        return importlib.import_module(".plot", __name__)
     raise AttributeError(f"module 'minkowski2d' has no attribute {name!r}")
 
 
@@ -64,6 +68,7 @@ __all__ = [
     "merge_trace",
     "MergeTrace",
     "animate",
+    "plot",
     "minkowski_sum_general",
     "convex_decomposition",
     "minkowski_difference",

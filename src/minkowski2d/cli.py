@@ -20,6 +20,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from ._cli_common import CLIError, add_io_options, emit, format_error, output_format
+from ._cli_features import run_features
 
 __all__ = ["main", "emit", "build_parser", "CLIError", "output_format"]
 
@@ -30,6 +31,7 @@ _PLUGINS = (
     "minkowski2d.animation.cli",
     "minkowski2d._cli_collision",
     "minkowski2d._cli_general",
+    "minkowski2d._cli_features",
 )
 
 SEED_A = [(0, 0), (2, 0), (0, 2)]
@@ -65,6 +67,8 @@ def _cmd_demo(args: argparse.Namespace) -> int:
 
 
 def _cmd_sum(args: argparse.Namespace) -> int:
+    if (status := run_features(args, "sum")) is not None:  # FeatureCollections, DXF
+        return status
     from .convex import minkowski_sum
     from .io import format_geometry, read_geometry
 
@@ -91,6 +95,8 @@ def _cmd_sum(args: argparse.Namespace) -> int:
 
 
 def _cmd_inflate(args: argparse.Namespace) -> int:
+    if (status := run_features(args, "inflate")) is not None:  # FeatureCollections, DXF
+        return status
     from .convex import cspace_obstacle
     from .io import format_geometry, read_geometry
 
@@ -102,6 +108,8 @@ def _cmd_inflate(args: argparse.Namespace) -> int:
 
 
 def _cmd_hull(args: argparse.Namespace) -> int:
+    if (status := run_features(args, "hull")) is not None:  # FeatureCollections, DXF
+        return status
     from .convex import convex_hull
     from .io import format_geometry, read_geometry
 
@@ -117,7 +125,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="minkowski2d",
         description="Exact 2-D Minkowski sums of polygons. Inputs are JSON point lists, "
-        "GeoJSON, WKT or CGAL .dat files, or - for standard input.",
+        "GeoJSON (FeatureCollections: one result per feature, properties kept), WKT, CGAL "
+        ".dat or DXF files, or - for standard input.",
     )
     parser.add_argument("--version", action="version", version=f"minkowski2d {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")

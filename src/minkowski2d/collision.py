@@ -32,13 +32,15 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from functools import partial
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from ._coerce import INT, as_array
+from ._containers import apply, boxed
 from ._core import _ext
-from ._types import ArrayLike2
+from ._types import ArrayLike2, PolygonsLike, ProgressLike
 from .errors import NonFiniteError, NotConvexError, OverflowGeometryError, ShapeError
 
 __all__ = [
@@ -419,7 +421,14 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
     return hit.astype(bool), res
 
 
-def intersects_many(As: Any, Bs: Any, *, method: str = "auto", threads: int = 1) -> np.ndarray:
+def intersects_many(
+    As: PolygonsLike,
+    Bs: PolygonsLike,
+    *,
+    method: str = "auto",
+    threads: int = 1,
+    progress: ProgressLike = None,
+) -> Any:
     """:func:`intersects` for many pairs: pairwise, or one polygon against many.
 
     Parameters
@@ -432,11 +441,17 @@ def intersects_many(As: Any, Bs: Any, *, method: str = "auto", threads: int = 1)
     threads : int, default 1, keyword-only
         Split the pairs into this many contiguous chunks run in parallel (the GIL is
         released); the result does not depend on it.
+    progress : None, True or callable, keyword-only
+        ``True``: a tqdm bar on stderr; a callable: ``cb(done, total)`` after each of
+        about 64 chunks, last with ``done == total``.
 
     Returns
     -------
-    (P,) bool ndarray
-        Entry k is exactly ``intersects(As[k], Bs[k])``.
+    (P,) bool ndarray, or a pandas Series
+        Entry k is exactly ``intersects(As[k], Bs[k])``. A GeoSeries operand gives a
+        Series with its index (nullable ``boolean``: ``<NA>`` for a None member); a
+        numpy object array of shapely geometries gives a bool array of its shape
+        (``False`` for None, as in shapely). An empty member never intersects.
 
     Examples
     --------
@@ -445,22 +460,32 @@ def intersects_many(As: Any, Bs: Any, *, method: str = "auto", threads: int = 1)
     >>> mk.intersects_many(robot, [[(1, 0), (2, 0), (2, 1)], [(3, 3), (4, 3), (3, 4)]]).tolist()
     [True, False]
     """
+    if progress is not None or boxed(As) or boxed(Bs):
+        return apply(
+            partial(intersects_many, method=method, threads=threads), As, Bs, progress=progress
+        )
     if method not in _METHODS:
         raise ValueError(f"method must be 'auto', 'sum' or 'gjk', not {method!r}")
     hit, _ = _batch(As, Bs, _METHODS[method], threads)
     return hit
 
 
-def distance_many(As: Any, Bs: Any, *, threads: int = 1) -> Distance:
+def distance_many(
+    As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
+) -> Distance:
     """:func:`distance` for many pairs (pairwise or one against many).
 
-    ``threads`` splits the pairs over that many threads, as in :func:`intersects_many`.
+    ``threads`` splits the pairs over that many threads, and ``progress`` reports, as in
+    :func:`intersects_many`.
 
     Returns
     -------
     Distance
         ``distance`` (P,), ``point_a`` and ``point_b`` (P, 2): row k equals
-        ``distance(As[k], Bs[k])``.
+        ``distance(As[k], Bs[k])``. For a GeoSeries operand: a Series of distances and
+        two GeoSeries of witness Points, with its index and CRS; for an object array:
+        arrays of its shape (Points as shapely geometries). NaN and None for a None or
+        empty member.
 
     Examples
     --------
@@ -469,20 +494,27 @@ def distance_many(As: Any, Bs: Any, *, threads: int = 1) -> Distance:
     >>> d.distance.tolist(), d.point_b.tolist()
     ([5.0, 2.0], [[3.0, 4.0], [0.0, 2.0]])
     """
+    if progress is not None or boxed(As) or boxed(Bs):
+        return apply(partial(distance_many, threads=threads), As, Bs, progress=progress)
     hit, res = _batch(As, Bs, _DISTANCE, threads)
     return Distance(res[:, 0].copy(), res[:, 3:5].copy(), res[:, 5:7].copy())
 
 
-def penetration_many(As: Any, Bs: Any, *, threads: int = 1) -> Penetration:
+def penetration_many(
+    As: PolygonsLike, Bs: PolygonsLike, *, threads: int = 1, progress: ProgressLike = None
+) -> Penetration:
     """:func:`penetration` for many pairs (pairwise or one against many).
 
-    ``threads`` splits the pairs over that many threads, as in :func:`intersects_many`.
+    ``threads`` splits the pairs over that many threads, and ``progress`` reports, as in
+    :func:`intersects_many`.
 
     Returns
     -------
     Penetration
         ``depth`` (P,), ``normal``, ``point_a``, ``point_b`` (P, 2): row k equals
-        ``penetration(As[k], Bs[k])``.
+        ``penetration(As[k], Bs[k])``. For a GeoSeries operand: Series of depths, a
+        DataFrame of normals (columns x, y) and GeoSeries of witness Points, all with its
+        index; NaN and None for a None or empty member.
 
     Examples
     --------
@@ -491,6 +523,8 @@ def penetration_many(As: Any, Bs: Any, *, threads: int = 1) -> Penetration:
     >>> mk.penetration_many(sq, [[(3, 1), (6, 1), (6, 3)], [(6, 0), (7, 0), (7, 1)]]).depth.tolist()
     [1.0, -2.0]
     """
+    if progress is not None or boxed(As) or boxed(Bs):
+        return apply(partial(penetration_many, threads=threads), As, Bs, progress=progress)
     hit, res = _batch(As, Bs, _PENETRATION, threads)
     return Penetration(res[:, 0].copy(), res[:, 1:3].copy(), res[:, 3:5].copy(), res[:, 5:7].copy())
 

@@ -29,6 +29,7 @@ import numpy as np
 
 from .errors import (
     EmptyGeometryError,
+    GeometryError,
     InputFormatError,
     OverflowGeometryError,
     ShapeError,
@@ -43,6 +44,9 @@ __all__ = [
     "split_selector",
     "format_geometry",
     "FORMATS",
+    "Feature",
+    "read_features",
+    "read_dxf",
 ]
 
 FORMATS = ("json", "geojson", "wkt", "svg")
@@ -148,6 +152,8 @@ def read_geometry(source: str | Path) -> Any:
     """
     s = str(source)
     path, sel = split_selector(s)
+    if path.lower().endswith(".dxf"):
+        return _one_dxf(s)
     if path.endswith(".dat"):
         items = read_cgal_dat(path)
         if path != s:  # a selector, even an empty one
@@ -678,3 +684,157 @@ def _svg(geom: Any) -> str:
         f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{vb}" width="400" height="400">\n'
         f"  {body}\n</svg>"
     )
+
+
+# --------------------------------------------------------------------------------------
+# many features: GeoJSON FeatureCollections and DXF drawings
+
+
+class Feature(NamedTuple):
+    """One feature of a collection: its geometry (as :func:`read_geometry` returns it, or
+    None for a null geometry) and its properties (a dict; GeoJSON's ``id`` is kept under
+    the key ``"id"`` of :attr:`extra`)."""
+
+    geometry: Any
+    properties: dict | None
+    extra: dict
+
+
+def read_features(source: str | Path) -> list[Feature] | None:
+    """The features of a GeoJSON FeatureCollection or a DXF drawing, in order; None for
+    any other input (a single geometry: use :func:`read_geometry`).
+
+    Raises a :class:`GeometryError` naming the file and the feature
+    (``obstacles.geojson: features[3]: ...``) for a feature that is not a polygon.
+
+    Examples
+    --------
+    >>> import json, tempfile, os
+    >>> fc = {"type": "FeatureCollection", "features": [
+    ...     {"type": "Feature", "properties": {"name": "a"},
+    ...      "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [2, 0], [0, 2], [0, 0]]]}},
+    ...     {"type": "Feature", "properties": {"name": "b"}, "geometry": None}]}
+    >>> path = os.path.join(tempfile.mkdtemp(), "fc.geojson")
+    >>> _ = open(path, "w").write(json.dumps(fc))
+    >>> [(f.geometry if f.geometry is None else f.geometry.tolist(), f.properties)
+    ...  for f in read_features(path)]
+    [([[0, 0], [2, 0], [0, 2]], {'name': 'a'}), (None, {'name': 'b'})]
+    """
+    s = str(source)
+    if s.lower().endswith(".dxf"):
+        return read_dxf(s)
+    if s.endswith(".dat") or ".dat#" in s:
+        return None
+    text = _read_text(source)
+    t = text.lstrip()
+    if not t.startswith("{") or '"FeatureCollection"' not in t:
+        return None
+    try:
+        data = json.loads(t)
+    except (ValueError, RecursionError):
+        return None  # read_geometry reports the problem
+    if not isinstance(data, dict) or data.get("type") != "FeatureCollection":
+        return None
+    feats = data.get("features")
+    if not isinstance(feats, list):
+        return None
+    if not feats:
+        raise EmptyGeometryError(f"{s}: a FeatureCollection without features", argument=s)
+    out = []
+    for k, f in enumerate(feats):
+        where = f"{s}: features[{k}]"
+        if not isinstance(f, dict) or f.get("type") != "Feature":
+            raise ShapeError(f"{where}: {_short(f)} is not a GeoJSON Feature", argument=where)
+        props = f.get("properties")
+        if props is not None and not isinstance(props, dict):
+            raise ShapeError(f"{where}: properties must be an object or null", argument=where)
+        extra = {"id": f["id"]} if "id" in f else {}
+        geom = f.get("geometry")
+        if geom is None:
+            out.append(Feature(None, props, extra))
+            continue
+        try:
+            out.append(Feature(_from_geojson(geom, s, "geometry"), props, extra))
+        except GeometryError as exc:
+            raise exc.renamed(where) from None
+    return out
+
+
+def read_dxf(source: str | Path) -> list[Feature]:
+    """The closed polylines (LWPOLYLINE, 2-D POLYLINE) of a DXF drawing's model space as
+    polygons, with properties ``layer``, ``handle`` and ``entity``; open polylines are
+    skipped. Needs ezdxf (the ``dxf`` extra).
+
+    Raises
+    ------
+    InputFormatError
+        ezdxf missing, a file that is not DXF, a polyline with arcs (bulges), or a
+        drawing without closed polylines.
+    """
+    name = str(source)
+    try:
+        import ezdxf
+    except ImportError:
+        raise InputFormatError(
+            f"{name}: reading DXF needs ezdxf",
+            argument=name,
+            hint="pip install 'minkowski2d[dxf]'",
+        ) from None
+    try:
+        doc = ezdxf.readfile(name)
+    except OSError as exc:
+        raise InputFormatError(
+            f"{name}: cannot read ({exc.strerror or exc})", argument=name
+        ) from None
+    except Exception as exc:  # ezdxf.DXFStructureError and friends
+        raise InputFormatError(
+            f"{name}: not a readable DXF file ({_short(str(exc))})", argument=name
+        ) from None
+    out = []
+    for e in doc.modelspace().query("LWPOLYLINE POLYLINE"):
+        kind = e.dxftype()
+        where = f"{name}: {kind} {e.dxf.handle}"
+        if kind == "LWPOLYLINE":
+            pts = [(x, y, b) for x, y, b in e.get_points("xyb")]
+            closed = bool(e.closed)
+        else:
+            if not (e.is_2d_polyline or e.is_3d_polyline):
+                continue  # meshes and polyface meshes are not polygons
+            pts = [
+                (v.dxf.location[0], v.dxf.location[1], v.dxf.get("bulge", 0.0)) for v in e.vertices
+            ]
+            closed = bool(e.is_closed)
+        if len(pts) > 1 and pts[0][:2] == pts[-1][:2]:
+            pts = pts[:-1]
+            closed = True
+        if not closed or not pts:
+            continue
+        if any(b for *_, b in pts):
+            raise InputFormatError(
+                f"{where}: has arcs (bulges); only straight edges are read",
+                argument=name,
+                hint="flatten the arcs into segments in the CAD program",
+            )
+        c = np.array([(x, y) for x, y, _ in pts], dtype=np.float64)
+        if not np.isfinite(c).all():
+            raise InputFormatError(f"{where}: a non-finite coordinate", argument=name)
+        props = {"layer": e.dxf.layer, "handle": e.dxf.handle, "entity": kind}
+        out.append(Feature(_intify(c), props, {}))
+    if not out:
+        raise EmptyGeometryError(
+            f"{name}: no closed polylines (LWPOLYLINE or POLYLINE) in the model space",
+            argument=name,
+            hint="close the outlines in the CAD program",
+        )
+    return out
+
+
+def _one_dxf(name: str) -> Any:
+    feats = read_dxf(name)
+    if len(feats) > 1:
+        raise InputFormatError(
+            f"{name}: the drawing holds {len(feats)} closed polylines; this command takes one",
+            argument=name,
+            hint="sum, inflate and hull take the whole drawing, one result per polyline",
+        )
+    return feats[0].geometry

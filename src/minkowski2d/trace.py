@@ -204,6 +204,12 @@ class MergeTrace:
     steps: list = field(default_factory=list)
     result: Polygon = field(default_factory=lambda: np.empty((0, 2)))
 
+    def _repr_html_(self) -> str:
+        """Inline SVG of the merge for Jupyter (edges coloured by source)."""
+        from ._svg import trace_svg
+
+        return trace_svg(self)
+
     @property
     def vertices(self) -> list:
         """The sum's vertices as a list of exact ``(x, y)`` tuples, in merge order."""

@@ -1,0 +1,186 @@
+"""The command line on collections: GeoJSON FeatureCollections and DXF drawings in, one
+feature out per feature in (properties kept), and ``minkowski2d completion``.
+
+``sum``, ``inflate`` and ``hull`` call :func:`run_features` first; it answers None when
+no input is a collection, and the command goes on as before. Otherwise:
+
+* ``minkowski2d inflate obstacles.geojson robot.json`` gives one feature per obstacle,
+  ``obstacle ⊕ (−robot)``, with the obstacle's properties (and ``id``);
+* ``sum A B`` with one collection pairs each feature with the other polygon, with two
+  collections of equal length pairs them in order (properties of A, then B's under keys A
+  does not have);
+* ``hull`` gives each feature's convex hull.
+
+A null geometry stays null. A non-convex or holed feature takes the general sum (``sum``,
+``inflate``) as the single-polygon commands do. Every result is computed before anything
+is written, so a bad feature (exit status 2, naming ``file: features[k]``) leaves no
+partial output. The output is a FeatureCollection (``--format json`` or ``geojson``), one
+WKT per line (``wkt``), or one SVG drawing (``svg``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any
+
+from ._cli_common import CLIError, emit, output_format
+
+__all__ = ["run_features", "add_parser"]
+
+
+def _is_general(g: Any, name: str) -> bool:
+    import numpy as np
+
+    from ._dispatch import check_convex
+
+    if not isinstance(g, np.ndarray):
+        return True
+    return not check_convex(g, name)
+
+
+def _neg(g: Any) -> Any:
+    import numpy as np
+
+    if isinstance(g, np.ndarray):
+        return -g
+    import shapely
+
+    return shapely.affinity.scale(g, -1, -1, origin=(0, 0))
+
+
+def _op(cmd: str, a: Any, b: Any, hull: bool, names: tuple[str, str]) -> Any:
+    from . import convex, general
+
+    if cmd == "hull":
+        return convex.convex_hull(a)
+    if cmd == "inflate":
+        if not hull and (_is_general(a, names[0]) or _is_general(b, names[1])):
+            return general.minkowski_sum_general(a, _neg(b))
+        return convex.cspace_obstacle(a, b, hull=hull)
+    if not hull and (_is_general(a, names[0]) or _is_general(b, names[1])):
+        return general.minkowski_sum_general(a, b)
+    return convex.minkowski_sum(a, b, hull=hull)
+
+
+def _inputs(args: argparse.Namespace, cmd: str) -> list[str]:
+    if cmd == "sum":
+        return [args.a, args.b]
+    if cmd == "inflate":
+        return [args.obstacle, args.robot]
+    return [args.points]
+
+
+def run_features(args: argparse.Namespace, cmd: str) -> int | None:
+    """Run ``cmd`` (``sum``, ``inflate``, ``hull``) on collections; None when no input
+    is a FeatureCollection or a DXF drawing."""
+    from .errors import GeometryError, ShapeError
+    from .io import Feature, format_geometry, read_features, read_geometry
+
+    files = _inputs(args, cmd)
+    if any(f == "-" for f in files):
+        return None  # standard input is read once, by the single-polygon path
+    feats = [read_features(f) for f in files]
+    if all(f is None for f in feats):
+        return None
+    counts = {len(f) for f in feats if f is not None}
+    if len(counts) > 1:
+        raise ShapeError(
+            f"{files[0]} has {len(feats[0] or [])} features but {files[1]} has "
+            f"{len(feats[1] or [])}; pairs need equal counts",
+            hint="give one collection and one polygon, or two collections of equal length",
+        )
+    n = counts.pop()
+    cols = [
+        f if f is not None else [Feature(read_geometry(path), None, {})] * n
+        for f, path in zip(feats, files)
+    ]
+    hull = bool(getattr(args, "hull", False))
+    out = []
+    for k in range(n):
+        parts = [c[k] for c in cols]
+        names = tuple(
+            f"{path}: features[{k}]" if f is not None else path for f, path in zip(feats, files)
+        )
+        props: dict | None = None
+        extra: dict = {}
+        for p, f in zip(parts, feats):
+            if f is not None and p.properties is not None:
+                props = {**p.properties, **(props or {})}
+            if f is not None and not extra:
+                extra = p.extra
+        if any(p.geometry is None for p in parts):
+            out.append((None, props, extra))
+            continue
+        a = parts[0].geometry
+        b = parts[1].geometry if len(parts) > 1 else None
+        try:
+            res = _op(cmd, a, b, hull, (names[0], names[-1]))
+        except GeometryError as exc:
+            raise _name(exc, names) from None
+        out.append((res, props, extra))
+    fmt = output_format(args)
+    emit(_format(out, fmt, format_geometry), args.output, files)
+    return 0
+
+
+def _name(exc: Any, names: tuple) -> Any:
+    from ._cli_common import CLI_HULL_HINT, renamed_error
+
+    mapping = {"a": names[0], "b": names[-1], "obstacle": names[0], "robot": names[-1]}
+    mapping["points"] = names[0]
+    if exc.argument in mapping:
+        return renamed_error(exc, mapping, hull_hint=CLI_HULL_HINT, hint_in_message=True)
+    return renamed_error(exc, prefix=names[0], hull_hint=CLI_HULL_HINT, hint_in_message=True)
+
+
+def _format(out: list, fmt: str, format_geometry: Any) -> str:
+    if fmt == "wkt":
+        return "\n".join(
+            "GEOMETRYCOLLECTION EMPTY" if g is None else format_geometry(g, "wkt")
+            for g, _, _ in out
+        )
+    if fmt == "svg":
+        import numpy as np
+        import shapely
+
+        geoms = [
+            shapely.from_geojson(format_geometry(g, "geojson")) for g, _, _ in out if g is not None
+        ]
+        gc = shapely.GeometryCollection(geoms)
+        return format_geometry(gc, "svg") if geoms else format_geometry(np.zeros((1, 2)), "svg")
+    feats = []
+    for g, props, extra in out:
+        geom = None if g is None else json.loads(format_geometry(g, "geojson"))
+        feats.append({"type": "Feature", **extra, "geometry": geom, "properties": props})
+    return json.dumps({"type": "FeatureCollection", "features": feats})
+
+
+# --------------------------------------------------------------------------------------
+# minkowski2d completion bash|zsh
+
+
+def _cmd_completion(args: argparse.Namespace) -> int:
+    try:
+        import shtab
+    except ImportError:
+        raise CLIError(
+            "shell completion needs shtab", hint="pip install shtab (or minkowski2d[test])"
+        ) from None
+    from .cli import build_parser
+
+    sys.stdout.write(shtab.complete(build_parser(), shell=args.shell))
+    return 0
+
+
+def add_parser(sub: Any) -> None:
+    """Register ``completion``."""
+    p = sub.add_parser(
+        "completion",
+        help="print a shell completion script (bash or zsh)",
+        description='Print a completion script: eval "$(minkowski2d completion bash)" '
+        "in ~/.bashrc, or minkowski2d completion zsh > ~/.zfunc/_minkowski2d.",
+    )
+    p.add_argument("shell", choices=("bash", "zsh"), help="the shell")
+    p.set_defaults(func=_cmd_completion)

@@ -1,0 +1,49 @@
+"""mypy --strict on user code (issue 13): the public API is typed (no ``Any`` for
+polygons), so ``minkowski_sum(1, 2)`` and ``hull="yes"`` are flagged and ordinary calls
+pass. The samples are in tests/typing/; lines that must fail carry ``# E:``."""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import minkowski2d
+
+HERE = Path(__file__).resolve().parent / "typing"
+
+
+def _mypy(tmp_path, *files):
+    pytest.importorskip("mypy", reason="mypy is not installed (pip install -e '.[test]')")
+    env = dict(os.environ)
+    src = Path(minkowski2d.__file__).resolve().parents[1]
+    if src.name not in ("site-packages", "dist-packages"):  # an editable install's src/
+        env["MYPYPATH"] = str(src)
+    cmd = [sys.executable, "-m", "mypy", "--strict", "--follow-imports=silent"]
+    cmd += ["--cache-dir", str(tmp_path / "cache"), "--no-color-output", "--no-error-summary"]
+    p = subprocess.run(
+        [*cmd, *map(str, files)], capture_output=True, text=True, env=env, timeout=300
+    )
+    return p.returncode, p.stdout + p.stderr
+
+
+def test_public_api_type_checks(tmp_path):
+    rc, out = _mypy(tmp_path, HERE / "sample_ok.py", HERE / "sample_bad.py")
+    errors = {}
+    for line in out.splitlines():
+        m = re.match(r".*?(sample_\w+)\.py:(\d+): error: (.*)", line)
+        if m:
+            errors.setdefault((m.group(1), int(m.group(2))), []).append(m.group(3))
+    assert not [k for k in errors if k[0] == "sample_ok"], out
+    marked = {
+        ("sample_bad", k)
+        for k, line in enumerate((HERE / "sample_bad.py").read_text().splitlines(), 1)
+        if "# E:" in line
+    }
+    assert set(errors) == marked, out
+    assert any("hull" in e and '"bool"' in e for e in errors[("sample_bad", 8)])
+    assert rc == 1
