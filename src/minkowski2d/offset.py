@@ -72,6 +72,10 @@ __all__ = ["offset", "offset_arcs", "OffsetArcs", "ROUNDING_MARGIN", "APPROX", "
 #: of the union's vertices (a few units in the last place) cannot cross it.
 ROUNDING_MARGIN = 2.0**-42
 
+#: The tolerance actually used is at most this fraction of the radius (a coarser one is
+#: met by a finer approximation).
+_MAX_REL_TOLERANCE = 0.5
+
 APPROX = ("outer", "inner")
 JOINS = ("round", "miter", "square")
 
@@ -463,6 +467,40 @@ def _result(geom: Any) -> Any:
     return shapely.orient_polygons(g)
 
 
+def _drop_slivers(out: Any, geom: Any, gap: float, grow: bool) -> Any:
+    """Remove the zero-width slivers that float noding can leave where pieces share an
+    edge: a hole of a grow (or a part of a shrink) nearer than ``gap`` to the polygon (its
+    boundary). Every true hole (part) lies at least ``gap`` away: that is the guarantee
+    itself (``gap`` is its lower distance bound less twice the rounding margin)."""
+    import shapely
+
+    if out.is_empty or geom is None:
+        return out
+    polys = list(shapely.get_parts(out))
+    bnd = shapely.boundary(geom)
+    keep = []
+    changed = False
+    for p in polys:
+        if not grow:
+            if shapely.distance(p, bnd) < gap:
+                changed = True
+                continue
+            keep.append(p)
+            continue
+        if len(p.interiors):
+            hs = shapely.polygons(list(p.interiors))
+            ok = shapely.distance(hs, geom) >= gap
+            if not ok.all():
+                changed = True
+                p = shapely.Polygon(p.exterior, [h for h, k in zip(p.interiors, ok) if k])
+        keep.append(p)
+    if not changed:
+        return out
+    if not keep:
+        return shapely.Polygon()
+    return keep[0] if len(keep) == 1 else shapely.MultiPolygon(keep)
+
+
 def _scale_exponent(rings: list[np.ndarray], r: float) -> int:
     big = max([float(np.abs(x).max()) for x in rings] + [r])
     return -math.frexp(big)[1]
@@ -486,7 +524,8 @@ def _offset_one(
     m = ROUNDING_MARGIN * (big + r)
     grow = distance > 0
     if join == "round":
-        eps = tolerance * s
+        # a tolerance beyond half the radius is met by a finer approximation
+        eps = min(tolerance * s, r * _MAX_REL_TOLERANCE)
         if eps < 4 * m:
             raise GeometryError(
                 f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
@@ -503,7 +542,7 @@ def _offset_one(
     else:
         kind = "sharp"
         rho = r
-        step = 0.0
+        step = eps = 0.0
     if geom is not None:
         geom = shapely.affinity.scale(geom, s, s, origin=(0, 0))
     if len(rings) == 1 and len(rings[0]) == 1:
@@ -531,7 +570,9 @@ def _offset_one(
             out = shapely.union_all(polys)
         else:
             out = shapely.difference(geom, shapely.union_all(polys))
-    out = _result(out)
+    # the least distance of the result's boundary from the polygon('s boundary)
+    near = r if (join != "round" or (approx == "outer") == grow) else r - eps
+    out = _drop_slivers(_result(out), geom, near - 2 * m, grow)
     if e:
         out = shapely.transform(out, lambda c: c / s)
     return out
