@@ -283,19 +283,23 @@ class _Curve:
         if join == "round":
             alpha = np.arctan2(nin[:, 1], nin[:, 0])
             k = np.where(convex, np.maximum(1, np.ceil(theta / step)), 0).astype(np.int64)
+            cnt = k if kind == "outer" else np.where(convex, k + 1, 0)
+            vid = np.repeat(np.arange(n), cnt)
+            start = np.cumsum(cnt) - cnt
+            jj = np.arange(int(cnt.sum())) - start[vid]
+            phi = theta / np.maximum(k, 1)
+            if kind == "outer":
+                a = alpha[vid] + (jj + 0.5) * phi[vid]
+                R = (rho / np.cos(phi / 2))[vid]
+            else:
+                a = alpha[vid] + jj * phi[vid]
+                R = np.full(len(vid), rho)
+            allc = ring[vid] + R[:, None] * np.column_stack([np.cos(a), np.sin(a)])
+            if kind == "inner":
+                allc[start[convex]] = self.E[convex]
+                allc[(start + cnt - 1)[convex]] = self.T[convex]
             for j in np.flatnonzero(convex):
-                kj = int(k[j])
-                phi = theta[j] / kj
-                if kind == "outer":
-                    a = alpha[j] + (np.arange(kj) + 0.5) * phi
-                    R = rho / math.cos(phi / 2)
-                    chain[j] = ring[j] + R * np.column_stack([np.cos(a), np.sin(a)])
-                else:
-                    a = alpha[j] + np.arange(kj + 1) * phi
-                    c = ring[j] + rho * np.column_stack([np.cos(a), np.sin(a)])
-                    c[0] = self.E[j]
-                    c[-1] = self.T[j]
-                    chain[j] = c
+                chain[j] = allc[start[j] : start[j] + cnt[j]]
         else:
             half = theta / 2
             bis = nin + nrm
@@ -464,7 +468,8 @@ def _result(geom: Any) -> Any:
     if len(polys) == 0:
         return shapely.Polygon()
     g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
-    return shapely.orient_polygons(g)
+    # each ring from its least (x, y) vertex; exteriors counter-clockwise, holes clockwise
+    return shapely.orient_polygons(shapely.normalize(g))
 
 
 def _drop_slivers(out: Any, geom: Any, gap: float, grow: bool) -> Any:
@@ -477,19 +482,20 @@ def _drop_slivers(out: Any, geom: Any, gap: float, grow: bool) -> Any:
     if out.is_empty or geom is None:
         return out
     polys = list(shapely.get_parts(out))
-    bnd = shapely.boundary(geom)
+    bnd = shapely.boundary(geom) if not grow else geom
+    shapely.prepare(bnd)  # an indexed distance test
     keep = []
     changed = False
     for p in polys:
         if not grow:
-            if shapely.distance(p, bnd) < gap:
+            if shapely.dwithin(bnd, p, gap):
                 changed = True
                 continue
             keep.append(p)
             continue
         if len(p.interiors):
             hs = shapely.polygons(list(p.interiors))
-            ok = shapely.distance(hs, geom) >= gap
+            ok = ~shapely.dwithin(bnd, hs, gap)
             if not ok.all():
                 changed = True
                 p = shapely.Polygon(p.exterior, [h for h, k in zip(p.interiors, ok) if k])
@@ -568,7 +574,8 @@ def _offset_one(
     if not grow:
         closed = [c[::-1] for c in closed]
     out = _assemble(closed)
-    if out is None:
+    fast = out is not None
+    if not fast:
         polys = _chunks_union(curves)
         if grow:
             if geom is not None:
@@ -578,7 +585,9 @@ def _offset_one(
             out = shapely.difference(geom, shapely.union_all(polys))
     # the least distance of the result's boundary from the polygon('s boundary)
     near = r if (join != "round" or (approx == "outer") == grow) else r - eps
-    out = _drop_slivers(_result(out), geom, near - 2 * m, grow)
+    out = _result(out)
+    if not fast:  # slivers come from GEOS noding only
+        out = _drop_slivers(out, geom, near - 2 * m, grow)
     if e:
         out = shapely.transform(out, lambda c: c / s)
     return out
@@ -895,9 +904,7 @@ class OffsetArcs:
         try:
             import ezdxf
         except ImportError as exc:  # pragma: no cover - depends on the environment
-            raise ImportError(
-                "DXF output needs ezdxf: pip install 'minkowski2d[dxf]'"
-            ) from exc
+            raise ImportError("DXF output needs ezdxf: pip install 'minkowski2d[dxf]'") from exc
         doc = ezdxf.new("R2010")
         msp = doc.modelspace()
         for ring in self.rings:
