@@ -916,7 +916,8 @@ class OffsetArcs:
 
 
 def _num(v: float) -> str:
-    return repr(float(v)).removesuffix(".0") if float(v).is_integer() else repr(float(v))
+    v = float(v) + 0.0  # no "-0"
+    return repr(v).removesuffix(".0") if v.is_integer() else repr(v)
 
 
 def _intersections(A: tuple, B: tuple) -> np.ndarray:
