@@ -394,3 +394,113 @@ def star_polygon(draw, convex=False, holed=False):
 )
 def test_random_one_sided(g, r, grow, rel, approx):
     check_offset(g, r if grow else -r, rel * r, approx)
+
+
+# --------------------------------------------------------------------------------------
+# exact arcs
+
+
+def _arc_rows(arcs):
+    return [r for p in arcs.polygons for r in p]
+
+
+def _ring_signed_area(ring, radius):
+    x, y, b = ring[:, 0], ring[:, 1], ring[:, 2]
+    a = 0.5 * float((x * np.roll(y, -1) - np.roll(x, -1) * y).sum())
+    sw = 4 * np.arctan(b[b != 0])
+    return a + float((0.5 * radius**2 * (sw - np.sin(sw))).sum())
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+@pytest.mark.parametrize("distance", [0.3, 1.3, -0.2, -0.45])
+def test_arcs_exact_boundary(name, distance):
+    poly = CASES[name]
+    arcs = mk.offset_arcs(poly, distance)
+    P = shapely.orient_polygons(poly if hasattr(poly, "geom_type") else shapely.Polygon(poly))
+    verts = {tuple(v) for v in shapely.get_coordinates(P).tolist()}
+    r = abs(distance)
+    bnd = shapely.boundary(P)
+    for ring in _arc_rows(arcs):
+        # every junction lies on the true boundary: at distance r from the polygon
+        d = shapely.distance(shapely.points(ring[:, :2]), bnd)
+        assert np.allclose(d, r, rtol=0, atol=1e-12 * 8)
+        arc = ~np.isnan(ring[:, 3])
+        # arcs are centred at the polygon's vertices, bulging outwards for a grow
+        assert all(tuple(c) in verts for c in ring[arc, 3:5].tolist())
+        assert (np.sign(ring[arc, 2]) == np.sign(distance)).all()
+        ends = np.roll(ring[:, :2], -1, 0)[arc]
+        assert np.allclose(np.hypot(*(ends - ring[arc, 3:5]).T), r, atol=1e-12)
+    # the exact area lies between the inner and the outer approximations
+    outer = mk.offset(poly, distance, tolerance=1e-7 * r)
+    inner = mk.offset(poly, distance, tolerance=1e-7 * r, approx="inner")
+    assert inner.area - 1e-9 <= arcs.area <= outer.area + 1e-9
+    assert counts(outer) == (len(arcs.polygons), sum(len(p) - 1 for p in arcs.polygons))
+    # exteriors counter-clockwise, holes clockwise
+    for p in arcs.polygons:
+        assert _ring_signed_area(p[0], r) > 0
+        assert all(_ring_signed_area(h, r) < 0 for h in p[1:])
+
+
+def test_arcs_square_and_point():
+    a = mk.offset_arcs(SQUARE, 1)
+    ring = a.polygons[0][0]
+    assert ring[:, :2].tolist() == [[0, -1], [4, -1], [5, 0], [5, 4], [4, 5], [0, 5], [-1, 4],
+                                    [-1, 0]]  # fmt: skip
+    assert np.allclose(ring[1::2, 2], math.tan(math.pi / 8))
+    assert a.svg_path().count(" A ") == 4
+    disk = mk.offset_arcs([(2, 3)], 1.5)
+    assert abs(disk.area - math.pi * 2.25) < 1e-12
+    assert mk.offset_arcs(SQUARE, -3).polygons == []
+
+
+def test_arcs_flat_arc_is_straight():
+    # a vertex that turns by 1e-13 rad: its arc has a sagitta far below one ulp
+    P = [(0, 0), (1, 0), (2, 1e-13), (2, 5), (0, 5)]
+    ring = mk.offset_arcs(P, 1).polygons[0][0]
+    assert int((ring[:, 2] != 0).sum()) == 4
+
+
+def test_arcs_to_polygon_and_dxf(tmp_path):
+    ezdxf = pytest.importorskip("ezdxf")
+    arcs = mk.offset_arcs(FRAME, 0.4)
+    assert arcs.to_polygon(1e-3).equals(mk.offset(FRAME, 0.4, tolerance=1e-3))
+    path = tmp_path / "frame.dxf"
+    arcs.to_dxf(path)
+    doc = ezdxf.readfile(path)
+    polys = list(doc.modelspace().query("LWPOLYLINE"))
+    rings = _arc_rows(arcs)
+    assert len(polys) == len(rings) == 2
+    for e, ring in zip(polys, rings):
+        assert e.closed
+        pts = np.array([tuple(p) for p in e.get_points("xyb")], float)
+        assert np.array_equal(pts, ring[:, :3])
+    # outer ring counter-clockwise (positive bulges), the hole clockwise
+    assert _ring_signed_area(rings[0], 0.4) > 0 > _ring_signed_area(rings[1], 0.4)
+    assert arcs.to_svg().startswith("<svg")
+
+
+# --------------------------------------------------------------------------------------
+# command line
+
+
+def test_cli_offset(tmp_path, capsys):
+    from minkowski2d.cli import main
+
+    src = tmp_path / "sq.json"
+    src.write_text("[[0, 0], [4, 0], [4, 4], [0, 4]]")
+    assert main(["offset", str(src), "-r", "1", "--tolerance", "0.01", "--format", "wkt"]) == 0
+    g = shapely.from_wkt(capsys.readouterr().out)
+    check_offset(SQUARE, 1, 0.01, "outer", out=g)
+    assert main(["offset", str(src), "-r", "-1", "--join", "miter", "--format", "wkt"]) == 0
+    assert shapely.from_wkt(capsys.readouterr().out).equals(shapely.box(1, 1, 3, 3))
+    assert main(["offset", str(src), "-r", "1", "--format", "svg"]) == 0
+    assert " A " in capsys.readouterr().out
+    pytest.importorskip("ezdxf")
+    out = tmp_path / "o.dxf"
+    assert main(["offset", str(src), "-r", "-0.5", "-o", str(out)]) == 0
+    # DXF in: the shrunk square read back and grown again
+    assert main(["offset", str(out), "-r", "0.5", "--join", "miter", "--format", "wkt"]) == 0
+    assert shapely.from_wkt(capsys.readouterr().out).equals(shapely.box(0, 0, 4, 4))
+    # a round join without tolerance cannot be written as a polygon: one line, status 2
+    assert main(["offset", str(src), "-r", "1", "--format", "wkt"]) == 2
+    assert "tolerance" in capsys.readouterr().err
