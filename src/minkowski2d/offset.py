@@ -242,6 +242,9 @@ def _step(r: float, eps: float, m: float, kind: str) -> float:
     return min(2.0 * math.acos(min(c, 1.0)), _MAX_STEP_INNER)
 
 
+_DETOUR = -(2**62)
+
+
 class _Curve:
     """The offset curve of one ring whose outside is on its right.
 
@@ -342,21 +345,28 @@ class _Curve:
             trim &= ~(bad | np.roll(bad, 1))
         self.trim = trim
 
-    def closed(self) -> np.ndarray:
-        """The whole curve, trimmed at every trimmable reflex vertex."""
-        out = []
+    def closed(self) -> tuple[np.ndarray, np.ndarray]:
+        """The whole curve, trimmed at every trimmable reflex vertex, and a label for
+        each of its segments (point ``k`` to ``k + 1``): edge ``i`` moved (``i``), the arc
+        of vertex ``j`` (``-1 - j``), or a detour through a vertex (:data:`_DETOUR`)."""
+        out, lab = [], []
         n, conv, trim = self.n, self.convex, self.trim
         for i in range(n):
             if not conv[i] and not trim[i]:
                 out.append(self.T[i][None, :])
+                lab.append([i])
             b = (i + 1) % n
             if conv[b]:
-                out.append(self.chain[b])
+                c = self.chain[b]
+                out.append(c)
+                lab.append([-1 - b] * (len(c) - 1) + [b])
             elif trim[b]:
                 out.append(self.X[b][None, :])
+                lab.append([b])
             else:
                 out.append(np.vstack([self.E[b], self.ring[b]]))
-        return np.concatenate(out)
+                lab.append([_DETOUR, _DETOUR])
+        return np.concatenate(out), np.concatenate(lab).astype(np.int64)
 
     def chunk(self, i0: int, i1: int) -> np.ndarray:
         """The ring of edges ``i0..i1`` (inclusive, cyclic): from ``ring[i0]`` along the
@@ -403,32 +413,35 @@ def _linearrings(rings: list[np.ndarray]) -> np.ndarray:
     return shapely.linearrings(np.concatenate(rings), indices=ids)
 
 
-def _assemble(rings: list[np.ndarray]) -> Any:
-    """The polygon whose winding number is that of the closed curves ``rings``, or None
-    when they are not disjoint simple rings that nest into a valid (multi)polygon."""
+def _assemble(rings: list[np.ndarray]) -> tuple[Any, list] | None:
+    """The polygon whose winding number is that of the closed curves ``rings``, and its
+    polygons as lists of ring indices (shell first); None when the rings are not disjoint
+    simple rings that nest into a valid (multi)polygon."""
     import shapely
 
-    lr = _linearrings(rings) if rings else []
-    if not len(lr) or not shapely.is_simple(lr).all():
+    if not rings:
         return None
+    lr = _linearrings(rings)
     ccw = shapely.is_ccw(lr)
-    shells = [shapely.Polygon(x) for x, c in zip(lr, ccw) if c]
-    holes = [x for x, c in zip(lr, ccw) if not c]
-    if not shells:
+    si = np.flatnonzero(ccw)
+    hi = np.flatnonzero(~ccw)
+    if len(si) == 0:
         return None
-    if len(shells) == 1:
-        g = shapely.Polygon(lr[ccw][0], holes)
+    if len(si) == 1:
+        groups = [[int(si[0]), *hi.tolist()]]
     else:
-        own: list[list] = [[] for _ in shells]
+        shells = shapely.polygons(lr[si])
         areas = shapely.area(shells)
-        for h in holes:
-            p = shapely.Point(shapely.get_coordinates(h)[0])
-            inside = [k for k, s in enumerate(shells) if s.contains(p)]
-            if not inside:
+        groups = [[int(k)] for k in si]
+        for h in hi:
+            pt = shapely.points(rings[h][0])
+            inside = np.flatnonzero(shapely.contains(shells, pt))
+            if not len(inside):
                 return None
-            own[min(inside, key=lambda k: areas[k])].append(h)
-        g = shapely.MultiPolygon([shapely.Polygon(s.exterior, hs) for s, hs in zip(shells, own)])
-    return g if shapely.is_valid(g) else None
+            groups[int(inside[np.argmin(areas[inside])])].append(int(h))
+    polys = [shapely.Polygon(lr[g[0]], lr[g[1:]]) for g in groups]
+    geom = polys[0] if len(polys) == 1 else shapely.MultiPolygon(polys)
+    return (geom, groups) if shapely.is_valid(geom) else None
 
 
 def _chunks_union(curves: list[_Curve], size: int = 64) -> Any:
@@ -520,6 +533,7 @@ def _offset_one(
     join: str,
     limit: float,
     read: tuple | None = None,
+    info: dict | None = None,
 ) -> Any:
     import shapely
 
@@ -570,12 +584,20 @@ def _offset_one(
         rings = [x[::-1] for x in rings]
     ckind = "outer" if kind == "sharp" else kind
     curves = [_Curve(x, rho, step, ckind, join, limit) for x in rings]
-    closed = [c.closed() for c in curves]
-    if not grow:
-        closed = [c[::-1] for c in closed]
-    out = _assemble(closed)
-    fast = out is not None
-    if not fast:
+    closed, labels = [], []
+    for c in curves:
+        pts, lab = c.closed()
+        if not grow:  # the curve of the reversed rings, reversed back
+            pts, lab = pts[::-1], np.roll(lab[::-1], -1)
+        # start each ring at its least (x, y) vertex, as shapely.normalize does
+        k = int(np.lexsort((pts[:, 1], pts[:, 0]))[0])
+        closed.append(np.roll(pts, -k, 0))
+        labels.append(np.roll(lab, -k))
+    asm = _assemble(closed)
+    fast = asm is not None
+    if fast:
+        out = asm[0]
+    else:
         polys = _chunks_union(curves)
         if grow:
             if geom is not None:
@@ -583,11 +605,15 @@ def _offset_one(
             out = shapely.union_all(polys)
         else:
             out = shapely.difference(geom, shapely.union_all(polys))
-    # the least distance of the result's boundary from the polygon('s boundary)
-    near = r if (join != "round" or (approx == "outer") == grow) else r - eps
-    out = _result(out)
-    if not fast:  # slivers come from GEOS noding only
-        out = _drop_slivers(out, geom, near - 2 * m, grow)
+        # the least distance of the result's boundary from the polygon('s boundary)
+        near = r if (join != "round" or (approx == "outer") == grow) else r - eps
+        # slivers come from GEOS noding only
+        out = _drop_slivers(_result(out), geom, near - 2 * m, grow)
+    if info is not None:
+        info.update(
+            scale=s, rings=rings, r=r, grow=grow, fast=fast, scaled=out,
+            closed=closed, labels=labels, groups=asm[1] if fast else None,
+        )  # fmt: skip
     if e:
         out = shapely.transform(out, lambda c: c / s)
     return out
@@ -956,69 +982,67 @@ def _intersections(A: tuple, B: tuple) -> np.ndarray:
     return np.array([m + h * perp, m - h * perp])
 
 
-def _trace(region: Any, rings: list[np.ndarray], distance: float) -> list:
-    """Exact rings of segments and arcs for the traced ``region`` (a polygon close to the
-    offset of ``rings`` by ``distance``)."""
+def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
+    """Exact rings of segments and arcs.
+
+    ``items``: polygons, each a list of rings ``(coords, labels)`` tracing the offset
+    (``labels`` per segment as in :meth:`_Curve.closed`, local to ring ``k`` of ``rings``
+    as ``(k, labels)``, or None to label each segment by the nearest feature). ``rings``:
+    the polygon's rings with the offset side on their right (moved by ``r``); ``sign``:
+    +1 when the arcs turn counter-clockwise (a grow), -1 (a shrink).
+    """
     import shapely
 
-    r = abs(distance)
-    # the features: edges (moved by distance along their right normal) and vertices
-    starts, ends, vid_s, vid_e = [], [], [], []
-    verts = []
+    starts, ends, vid_s, vid_e, ebase = [], [], [], [], []
     base = 0
     for ring in rings:
         n = len(ring)
-        verts.append(ring)
-        if n == 1:
-            continue
+        ebase.append(base)
         idx = np.arange(n)
-        starts.append(ring)
-        ends.append(np.roll(ring, -1, 0))
-        vid_s.append(base + idx)
-        vid_e.append(base + (idx + 1) % n)
+        if n >= 2:
+            starts.append(ring)
+            ends.append(np.roll(ring, -1, 0))
+            vid_s.append(base + idx)
+            vid_e.append(base + (idx + 1) % n)
         base += n
-    V = np.concatenate(verts)
-    if starts:
-        A0, A1 = np.concatenate(starts), np.concatenate(ends)
-        VS, VE = np.concatenate(vid_s), np.concatenate(vid_e)
-        D = A1 - A0
-        L = np.hypot(D[:, 0], D[:, 1])
-        U = D / L[:, None]
-        N = np.column_stack([U[:, 1], -U[:, 0]])
-        tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
+    V = np.concatenate(rings)
+    A0, A1 = np.concatenate(starts), np.concatenate(ends)
+    VS, VE = np.concatenate(vid_s), np.concatenate(vid_e)
+    D = A1 - A0
+    L = np.hypot(D[:, 0], D[:, 1])
+    U = D / L[:, None]
+    N = np.column_stack([U[:, 1], -U[:, 0]])
+    MA0, MA1 = A0 + r * N, A1 + r * N  # the moved edges
+    tree = None
     big = max(float(np.abs(V).max()), r)
     tiny = ARC_STRAIGHT_ULPS * math.ulp(big)
-    sign = 1.0 if distance > 0 else -1.0
 
     def prim(label):
         if label >= 0:
-            return ("L", A0[label] + distance * N[label], U[label])
+            return ("L", MA0[label], U[label])
         return ("C", V[-1 - label], r)
 
     polys = []
-    for poly in shapely.get_parts(region):
+    for item in items:
         out_rings = []
-        for lr in [poly.exterior, *poly.interiors]:
-            c = shapely.get_coordinates(lr)[:-1]
+        for c, lab in item:
             k = len(c)
-            if not starts:  # a point: one full circle, as two half arcs
-                ctr = V[0]
-                out_rings.append(
-                    np.array(
-                        [
-                            [ctr[0] + r, ctr[1], 1.0, ctr[0], ctr[1]],
-                            [ctr[0] - r, ctr[1], 1.0, ctr[0], ctr[1]],
-                        ]
-                    )
-                )
-                break
-            mid = (c + np.roll(c, -1, 0)) / 2
-            qi, ei = tree.query_nearest(shapely.points(mid), all_matches=False)
-            e = np.empty(k, np.int64)
-            e[qi] = ei
-            t = ((mid - A0[e]) * U[e]).sum(axis=1)
-            lab = np.where(t <= 0, -1 - VS[e], np.where(t >= L[e], -1 - VE[e], e))
-            # runs of equal labels, starting at a change
+            if lab is not None:
+                ring_k, loc = lab
+                if (loc == _DETOUR).any():
+                    lab = None
+                else:
+                    b0 = ebase[ring_k]
+                    lab = np.where(loc >= 0, loc + b0, loc - b0)
+            if lab is None:
+                if tree is None:
+                    tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
+                mid = (c + np.roll(c, -1, 0)) / 2
+                qi, ei = tree.query_nearest(shapely.points(mid), all_matches=False)
+                e = np.empty(k, np.int64)
+                e[qi] = ei
+                t = ((mid - A0[e]) * U[e]).sum(axis=1)
+                lab = np.where(t <= 0, -1 - VS[e], np.where(t >= L[e], -1 - VE[e], e))
             chg = np.flatnonzero(lab != np.roll(lab, 1))
             if len(chg) == 0:
                 if lab[0] >= 0:
@@ -1033,46 +1057,48 @@ def _trace(region: Any, rings: list[np.ndarray], distance: float) -> list:
                     )
                 )
                 continue
-            labels = lab[chg]
+            labels = lab[chg].tolist()
             g = len(labels)
-            # junction between group q - 1 and group q, near vertex c[chg[q]]
             J = np.empty((g, 2))
             for q in range(g):
-                a, b = int(labels[q - 1]), int(labels[q])
-                near = c[chg[q]]
+                a, b = labels[q - 1], labels[q]
                 if a >= 0 and b < 0 and VE[a] == -1 - b:
-                    J[q] = A1[a] + distance * N[a]
+                    J[q] = MA1[a]
                 elif a < 0 and b >= 0 and VS[b] == -1 - a:
-                    J[q] = A0[b] + distance * N[b]
+                    J[q] = MA0[b]
                 else:
+                    near = c[chg[q]]
                     pts = _intersections(prim(a), prim(b))
                     if len(pts) == 0:
                         J[q] = near
                     else:
                         J[q] = pts[np.argmin(((pts - near) ** 2).sum(axis=1))]
-            rows = []
-            for q in range(g):
-                s0, s1 = J[q], J[(q + 1) % g]
-                lbl = int(labels[q])
-                if lbl >= 0 or (s0 == s1).all():
-                    rows.append([s0[0], s0[1], 0.0, np.nan, np.nan])
-                    continue
-                ctr = V[-1 - lbl]
-                a0 = math.atan2(s0[1] - ctr[1], s0[0] - ctr[0])
-                a1 = math.atan2(s1[1] - ctr[1], s1[0] - ctr[0])
-                sw = (a1 - a0) % (2 * math.pi) if sign > 0 else -((a0 - a1) % (2 * math.pi))
-                if r * (1 - math.cos(sw / 2)) <= tiny:
-                    rows.append([s0[0], s0[1], 0.0, np.nan, np.nan])
+            rows = np.empty((g, 5))
+            rows[:, :2] = J
+            rows[:, 2] = 0.0
+            rows[:, 3:] = np.nan
+            lab_arr = np.array(labels)
+            arc = np.flatnonzero(lab_arr < 0)
+            if len(arc):
+                ctr = V[-1 - lab_arr[arc]]
+                s0 = J[arc]
+                s1 = J[(arc + 1) % g]
+                a0 = np.arctan2(s0[:, 1] - ctr[:, 1], s0[:, 0] - ctr[:, 0])
+                a1 = np.arctan2(s1[:, 1] - ctr[:, 1], s1[:, 0] - ctr[:, 0])
+                if sign > 0:
+                    sw = np.mod(a1 - a0, 2 * math.pi)
                 else:
-                    rows.append([s0[0], s0[1], math.tan(sw / 4), ctr[0], ctr[1]])
-            arr = np.array(rows)
+                    sw = -np.mod(a0 - a1, 2 * math.pi)
+                real = (r * (1 - np.cos(sw / 2)) > tiny) & ~(s0 == s1).all(axis=1)
+                arc, ctr, sw = arc[real], ctr[real], sw[real]
+                rows[arc, 2] = np.tan(sw / 4)
+                rows[arc, 3:] = ctr
             # drop repeated points (a zero-length piece)
-            nxt = np.roll(arr[:, :2], -1, 0)
-            keep = ~((arr[:, :2] == nxt).all(axis=1))
+            keep = ~((rows[:, :2] == np.roll(rows[:, :2], -1, 0)).all(axis=1))
             if keep.sum() >= 2:
-                arr = arr[keep]
-                first = np.lexsort((arr[:, 0], arr[:, 1]))[0]  # bottom-most, then left-most
-                out_rings.append(np.roll(arr, -first, 0))
+                rows = rows[keep]
+                first = np.lexsort((rows[:, 0], rows[:, 1]))[0]  # bottom-most, then left-most
+                out_rings.append(np.roll(rows, -first, 0))
         if out_rings:
             polys.append(out_rings)
     return polys
@@ -1130,19 +1156,40 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
         )
     rings, geom = _read(polygon, "polygon")
     rings = [_clean(x) for x in rings]
+    if len(rings) == 1 and len(rings[0]) == 1:
+        if d < 0:
+            return OffsetArcs([], d, polygon)
+        cx, cy = (float(v) for v in rings[0][0])
+        r = abs(d)
+        ring = np.array([[cx + r, cy, 1.0, cx, cy], [cx - r, cy, 1.0, cx, cy]])
+        return OffsetArcs([[ring]], d, polygon)
+    info: dict = {}
     region = _offset_one(
-        polygon, d, _TRACE_TOLERANCE * abs(d), "outer", "round", 2.0, read=(rings, geom)
+        polygon,
+        d,
+        _TRACE_TOLERANCE * abs(d),
+        "outer",
+        "round",
+        2.0,
+        read=(rings, geom),
+        info=info,
     )
     if region.is_empty:
         return OffsetArcs([], d, polygon)
-    r0 = abs(d)
-    e = _scale_exponent(rings, r0)
-    s = math.ldexp(1.0, e)
     import shapely
 
-    reg = shapely.transform(region, lambda c: c * s) if e else region
-    polys = _trace(reg, [x * s for x in rings], d * s)
-    if e:
+    if info["fast"]:
+        closed, labels = info["closed"], info["labels"]
+        # each closed curve came from ring k of the rings (same order)
+        items = [[(closed[k], (k, labels[k])) for k in g] for g in info["groups"]]
+    else:
+        items = [
+            [(shapely.get_coordinates(x)[:-1], None) for x in [p.exterior, *p.interiors]]
+            for p in shapely.get_parts(info["scaled"])
+        ]
+    s = info["scale"]
+    polys = _trace(items, info["rings"], info["r"], 1.0 if d > 0 else -1.0)
+    if s != 1.0:
         for p in polys:
             for ring in p:
                 ring[:, [0, 1, 3, 4]] /= s
