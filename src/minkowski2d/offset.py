@@ -946,40 +946,70 @@ def _num(v: float) -> str:
     return repr(v).removesuffix(".0") if v.is_integer() else repr(v)
 
 
-def _intersections(A: tuple, B: tuple) -> np.ndarray:
-    """Points where two primitives' carriers meet: ("L", p, u) a line through p with
-    direction u, ("C", c, r) a circle. Tangencies and near-misses give the closest
-    point."""
-    if A[0] == "C" and B[0] == "L":
-        A, B = B, A
-    if A[0] == "L" and B[0] == "L":
-        _, p, u = A
-        _, q, v = B
-        den = u[0] * v[1] - u[1] * v[0]
-        if den == 0:
-            return np.empty((0, 2))
-        t = ((q[0] - p[0]) * v[1] - (q[1] - p[1]) * v[0]) / den
-        return (p + t * u)[None, :]
-    if A[0] == "L":
-        _, p, u = A
-        _, c, r = B
+def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r) -> np.ndarray:
+    """Where piece ``labels[q - 1]`` meets piece ``labels[q]`` (moved edge ``i >= 0`` or
+    the arc of vertex ``-1 - i``): the tangent point, or the crossing of the two carriers
+    (line/line, line/circle, circle/circle) nearest to ``near[q]``; a near-miss (the
+    carriers do not quite meet in float64) gives the closest point."""
+    a = np.roll(labels, 1)
+    b = labels
+    g = len(b)
+    J = near.astype(np.float64).copy()
+    la, lb = a >= 0, b >= 0
+    ia, ib = np.where(la, a, 0), np.where(lb, b, 0)
+    va, vb = np.where(la, 0, -1 - a), np.where(lb, 0, -1 - b)
+    # line -> its end vertex's arc, arc -> its vertex's next line: tangent points
+    t1 = la & ~lb & (VE[ia] == vb)
+    t2 = ~la & lb & (VS[ib] == va)
+    J[t1] = MA1[ia[t1]]
+    J[t2] = MA0[ib[t2]]
+    rest = ~(t1 | t2)
+    # line / line
+    ll = rest & la & lb
+    if ll.any():
+        p, u = MA0[ia[ll]], U[ia[ll]]
+        q, v = MA0[ib[ll]], U[ib[ll]]
+        den = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+        with np.errstate(all="ignore"):
+            t = ((q[:, 0] - p[:, 0]) * v[:, 1] - (q[:, 1] - p[:, 1]) * v[:, 0]) / den
+        X = p + t[:, None] * u
+        ok = den != 0
+        J[np.flatnonzero(ll)[ok]] = X[ok]
+    # line / circle (either order)
+    lc = rest & (la != lb)
+    if lc.any():
+        li = np.where(la, ia, ib)[lc]
+        ci = np.where(la, vb, va)[lc]
+        p, u, c = MA0[li], U[li], V[ci]
         w = p - c
-        b = float(w @ u)
-        disc = b * b - (float(w @ w) - r * r)
-        h = math.sqrt(max(disc, 0.0))
-        return np.array([p + (-b - h) * u, p + (-b + h) * u])
-    _, c1, r1 = A
-    _, c2, r2 = B
-    dv = c2 - c1
-    dd = math.hypot(*dv)
-    if dd == 0:
-        return np.empty((0, 2))
-    a = (dd * dd + r1 * r1 - r2 * r2) / (2 * dd)
-    h = math.sqrt(max(r1 * r1 - a * a, 0.0))
-    e = dv / dd
-    m = c1 + a * e
-    perp = np.array([-e[1], e[0]])
-    return np.array([m + h * perp, m - h * perp])
+        bb = (w * u).sum(axis=1)
+        disc = bb * bb - ((w * w).sum(axis=1) - r * r)
+        h = np.sqrt(np.maximum(disc, 0.0))
+        P1 = p + (-bb - h)[:, None] * u
+        P2 = p + (-bb + h)[:, None] * u
+        nr = near[lc]
+        pick = ((P1 - nr) ** 2).sum(axis=1) <= ((P2 - nr) ** 2).sum(axis=1)
+        J[lc] = np.where(pick[:, None], P1, P2)
+    # circle / circle
+    cc = rest & ~la & ~lb
+    if cc.any():
+        c1, c2 = V[va[cc]], V[vb[cc]]
+        dv = c2 - c1
+        dd = np.hypot(dv[:, 0], dv[:, 1])
+        with np.errstate(all="ignore"):
+            e = dv / dd[:, None]
+        m = c1 + (dd / 2)[:, None] * e
+        h = np.sqrt(np.maximum(r * r - (dd / 2) ** 2, 0.0))
+        perp = np.column_stack([-e[:, 1], e[:, 0]])
+        P1 = m + h[:, None] * perp
+        P2 = m - h[:, None] * perp
+        nr = near[cc]
+        pick = ((P1 - nr) ** 2).sum(axis=1) <= ((P2 - nr) ** 2).sum(axis=1)
+        X = np.where(pick[:, None], P1, P2)
+        ok = dd > 0
+        J[np.flatnonzero(cc)[ok]] = X[ok]
+    del g
+    return J
 
 
 def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
@@ -1016,11 +1046,6 @@ def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
     tree = None
     big = max(float(np.abs(V).max()), r)
     tiny = ARC_STRAIGHT_ULPS * math.ulp(big)
-
-    def prim(label):
-        if label >= 0:
-            return ("L", MA0[label], U[label])
-        return ("C", V[-1 - label], r)
 
     polys = []
     for item in items:
@@ -1059,20 +1084,7 @@ def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
                 continue
             labels = lab[chg].tolist()
             g = len(labels)
-            J = np.empty((g, 2))
-            for q in range(g):
-                a, b = labels[q - 1], labels[q]
-                if a >= 0 and b < 0 and VE[a] == -1 - b:
-                    J[q] = MA1[a]
-                elif a < 0 and b >= 0 and VS[b] == -1 - a:
-                    J[q] = MA0[b]
-                else:
-                    near = c[chg[q]]
-                    pts = _intersections(prim(a), prim(b))
-                    if len(pts) == 0:
-                        J[q] = near
-                    else:
-                        J[q] = pts[np.argmin(((pts - near) ** 2).sum(axis=1))]
+            J = _junctions(np.array(labels), c[chg], MA0, MA1, U, V, VS, VE, r)
             rows = np.empty((g, 5))
             rows[:, :2] = J
             rows[:, 2] = 0.0
