@@ -953,7 +953,6 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r) -> np.ndarray:
     carriers do not quite meet in float64) gives the closest point."""
     a = np.roll(labels, 1)
     b = labels
-    g = len(b)
     J = near.astype(np.float64).copy()
     la, lb = a >= 0, b >= 0
     ia, ib = np.where(la, a, 0), np.where(lb, b, 0)
@@ -1008,7 +1007,6 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r) -> np.ndarray:
         X = np.where(pick[:, None], P1, P2)
         ok = dd > 0
         J[np.flatnonzero(cc)[ok]] = X[ok]
-    del g
     return J
 
 
