@@ -76,6 +76,10 @@ ROUNDING_MARGIN = 2.0**-42
 #: met by a finer approximation).
 _MAX_REL_TOLERANCE = 0.5
 
+#: Magnitudes GEOS handles without underflow or overflow in its intersection arithmetic;
+#: outside this range the input is scaled by a power of two (exactly) and back.
+_COMFORT_LO, _COMFORT_HI = 2.0**-256, 2.0**256
+
 APPROX = ("outer", "inner")
 JOINS = ("round", "miter", "square")
 
@@ -203,26 +207,29 @@ def _geom_rings(geom: Any) -> list[np.ndarray]:
     return [shapely.get_coordinates(r)[:-1] for r in rings]
 
 
-def _clean(ring: np.ndarray) -> np.ndarray:
+def _clean(ring: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
     """Drop repeated and exactly collinear vertices (exact orientation); a spike (a turn
-    of a half-turn) is kept: it is a convex vertex of exterior angle π."""
+    of a half-turn) is kept: it is a convex vertex of exterior angle π. Returns the ring
+    and the exact orientation of each vertex's turn (None for fewer than 3 vertices)."""
     if len(ring) <= 2:
-        return ring
-    keep = np.ones(len(ring), bool)
-    same = (ring == np.roll(ring, -1, 0)).all(axis=1)
-    ring = ring[~same]
+        return ring, None
+    same = (ring == ring[np.arange(1, len(ring) + 1) % len(ring)]).all(axis=1)
+    if same.any():
+        ring = ring[~same]
     while True:  # removing a vertex can make its neighbours collinear: repeat
-        if len(ring) <= 2:
-            return ring
-        prv = np.roll(ring, 1, 0)
-        nxt = np.roll(ring, -1, 0)
+        n = len(ring)
+        if n <= 2:
+            return ring, None
+        prv = ring[np.arange(-1, n - 1) % n]
+        nxt = ring[np.arange(1, n + 1) % n]
         o = orient_array(prv, ring, nxt)
+        if not (o == 0).any():
+            return ring, o
         dot = ((ring - prv) * (nxt - ring)).sum(axis=1)
         keep = ~((o == 0) & (dot > 0))
         if keep.all():
-            break
+            return ring, o
         ring = ring[keep]
-    return ring
 
 
 # --------------------------------------------------------------------------------------
@@ -258,22 +265,24 @@ class _Curve:
 
     __slots__ = ("ring", "n", "convex", "chain", "T", "E", "X", "trim", "S")
 
-    def __init__(self, ring, rho, step, kind, join, limit):
+    def __init__(self, ring, rho, step, kind, join, limit, sgn=None):
         self.ring = ring
         n = self.n = len(ring)
-        nxt = np.roll(ring, -1, 0)
+        NX = np.arange(1, n + 1) % n
+        PV = np.arange(-1, n - 1) % n
+        nxt = ring[NX]
         d = nxt - ring  # edge i: ring[i] -> ring[i + 1]
         L = np.hypot(d[:, 0], d[:, 1])
         u = d / L[:, None]
         nrm = np.column_stack([u[:, 1], -u[:, 0]])  # right of the edge: the outside
-        uin = np.roll(u, 1, 0)
-        nin = np.roll(nrm, 1, 0)  # normal of the incoming edge, where the arc starts
+        uin = u[PV]
+        nin = nrm[PV]  # normal of the incoming edge, where the arc starts
         cr = uin[:, 0] * u[:, 1] - uin[:, 1] * u[:, 0]
         dt = (uin * u).sum(axis=1)
         if n == 2:
             sgn = np.zeros(2, np.int8)
-        else:
-            sgn = orient_array(np.roll(ring, 1, 0), ring, nxt)
+        elif sgn is None:
+            sgn = orient_array(ring[PV], ring, nxt)
         spike = (sgn == 0) & (dt < 0)
         convex = (sgn > 0) | spike
         theta = np.where(convex, np.arctan2(np.abs(cr), dt), 0.0)
@@ -332,17 +341,17 @@ class _Curve:
         # extent of moved edge i along u_i, measured from ring[i]
         p0 = ((S - ring) * u).sum(axis=1)
         first = np.array([c[0] if c is not None else [np.nan, np.nan] for c in chain])
-        cb = np.roll(convex, -1)[:, None]
-        endpt = np.where(cb, np.roll(first, -1, 0), np.roll(self.E, -1, 0))
+        cb = convex[NX][:, None]
+        endpt = np.where(cb, first[NX], self.E[NX])
         p1 = ((endpt - ring) * u).sum(axis=1)
         trim = reflex & np.isfinite(tau)
         for _ in range(n + 1):
             a0 = p0 + np.where(trim, tau, 0.0)
-            a1 = p1 - np.where(np.roll(trim, -1), np.roll(tau, -1), 0.0)
+            a1 = p1 - np.where(trim[NX], tau[NX], 0.0)
             bad = ~(a0 <= a1)
             if not bad.any():
                 break
-            trim &= ~(bad | np.roll(bad, 1))
+            trim &= ~(bad | bad[PV])
         self.trim = trim
 
     def closed(self) -> tuple[np.ndarray, np.ndarray]:
@@ -521,7 +530,11 @@ def _drop_slivers(out: Any, geom: Any, gap: float, grow: bool) -> Any:
 
 
 def _scale_exponent(rings: list[np.ndarray], r: float) -> int:
+    """The power of two that brings the largest magnitude near 1, or 0 when it already
+    lies in GEOS's comfortable range ``[2**-256, 2**256]``."""
     big = max([float(np.abs(x).max()) for x in rings] + [r])
+    if _COMFORT_LO <= big <= _COMFORT_HI:
+        return 0
     return -math.frexp(big)[1]
 
 
@@ -538,13 +551,16 @@ def _offset_one(
     import shapely
 
     rings, geom = read if read is not None else _read(obj, "polygon")
-    rings = [_clean(x) for x in rings]
+    cleaned = [_clean(x) for x in rings]
+    rings = [c[0] for c in cleaned]
+    sgns = [c[1] for c in cleaned]
     if distance == 0:
         return _result(geom) if geom is not None else shapely.Polygon()
     r0 = abs(distance)
     e = _scale_exponent(rings, r0)
     s = math.ldexp(1.0, e)
-    rings = [x * s for x in rings]
+    if e:
+        rings = [x * s for x in rings]
     r = r0 * s
     big = max(float(np.abs(x).max()) for x in rings)
     m = ROUNDING_MARGIN * (big + r)
@@ -569,8 +585,8 @@ def _offset_one(
         kind = "sharp"
         rho = r
         step = eps = 0.0
-    if geom is not None:
-        geom = shapely.affinity.scale(geom, s, s, origin=(0, 0))
+    if geom is not None and e:
+        geom = shapely.transform(geom, lambda c: c * s)
     if len(rings) == 1 and len(rings[0]) == 1:
         if not grow:
             return shapely.Polygon()
@@ -582,8 +598,9 @@ def _offset_one(
         if geom is None:
             return shapely.Polygon()
         rings = [x[::-1] for x in rings]
+        sgns = [None if o is None else -o[::-1] for o in sgns]
     ckind = "outer" if kind == "sharp" else kind
-    curves = [_Curve(x, rho, step, ckind, join, limit) for x in rings]
+    curves = [_Curve(x, rho, step, ckind, join, limit, o) for x, o in zip(rings, sgns)]
     closed, labels = [], []
     for c in curves:
         pts, lab = c.closed()
@@ -1165,7 +1182,6 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
             hint="give a positive (grow) or negative (shrink) distance",
         )
     rings, geom = _read(polygon, "polygon")
-    rings = [_clean(x) for x in rings]
     if len(rings) == 1 and len(rings[0]) == 1:
         if d < 0:
             return OffsetArcs([], d, polygon)
