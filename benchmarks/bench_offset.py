@@ -11,14 +11,23 @@ reaches beyond the true offset's boundary, ``in``: how far it falls inside; meas
 the vertices and, for ``in``, along every edge, with GEOS distances), whether it contains
 the true set (``in`` ≤ 0 up to 1e-9·r) and whether it is a valid polygon.
 
-Run: ``python benchmarks/bench_offset.py [--repeat 5] [--quick]``
+CGAL: ``approximated_offset_2`` / ``approximated_inset_2`` with the same ε (one-sided
+outer by construction; its result is arcs with rational end points, reported as the
+number of pieces), through ``cgal_offset_driver.cpp`` built once with g++ -O2 against
+Debian's libcgal-dev into ``build/cgal_offset_driver``; simple polygons only, the time
+excludes reading the file and process start.
+
+Run: ``python benchmarks/bench_offset.py [--repeat 5] [--quick] [--no-cgal]``
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import shutil
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -29,6 +38,49 @@ import minkowski2d as mk
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data" / "cgal-minkowski"
+DRIVER_SRC = Path(__file__).with_name("cgal_offset_driver.cpp")
+DRIVER = ROOT / "build" / "cgal_offset_driver"
+
+
+def build_driver() -> str | None:
+    """Path of the CGAL offset driver, building it if needed; None (and why) if not."""
+    if DRIVER.exists() and DRIVER.stat().st_mtime >= DRIVER_SRC.stat().st_mtime:
+        return str(DRIVER)
+    if shutil.which("g++") is None:
+        print("CGAL: skipped (no g++)")
+        return None
+    if not Path("/usr/include/CGAL/approximated_offset_2.h").exists():
+        print("CGAL: skipped (libcgal-dev is not installed: apt-get install -y libcgal-dev)")
+        return None
+    DRIVER.parent.mkdir(exist_ok=True)
+    print("CGAL: building build/cgal_offset_driver (g++ -O2, about a minute) ...", flush=True)
+    cmd = ["g++", "-O2", "-std=c++17", str(DRIVER_SRC), "-o", str(DRIVER), "-lgmp", "-lmpfr"]
+    res = subprocess.run(cmd, capture_output=True, text=True)
+    if res.returncode:
+        print("CGAL: skipped (build failed):", res.stderr[-500:])
+        return None
+    return str(DRIVER)
+
+
+def run_cgal(driver: str, g, d: float, eps: float, repeat: int):
+    """(seconds, pieces, components, holes) of CGAL's approximated offset / inset of a
+    simple polygon (None for polygons with holes or on failure)."""
+    if g.geom_type != "Polygon" or len(g.interiors):
+        return None
+    c = shapely.get_coordinates(g.exterior)[:-1]
+    with tempfile.TemporaryDirectory() as tmp:
+        f = Path(tmp) / "p.dat"
+        f.write_text(f"{len(c)}\n" + "\n".join(f"{x!r} {y!r}" for x, y in c.tolist()) + "\n")
+        res = subprocess.run(
+            [driver, "approx", str(f), repr(d), repr(eps), str(repeat)],
+            capture_output=True,
+            text=True,
+            timeout=600,
+        )
+    if res.returncode:
+        return None
+    t, pieces, comps, holes = res.stdout.split()
+    return float(t), int(pieces), int(comps), int(holes)
 
 
 def star(n: int, R: float, r: float) -> np.ndarray:
@@ -71,7 +123,8 @@ def cases() -> list:
     res = []
     for name, p, r in out:
         res.append((name + "+", p, r))
-        res.append((name + "-", p, -r / 2))
+        # rooms_part1's walls are thinner than r: a shrink by r / 2 erases it
+        res.append((name + "-", p, -r / (12 if name == "rooms_part1" else 2)))
     return res
 
 
@@ -178,6 +231,8 @@ def errors(out, P, d):
 
 
 def minimum(arcs, eps):
+    """Σ ceil(θ / 2·acos(1 − ε/r)) over the arcs, plus one vertex per junction of two
+    straight pieces (a corner no approximation can avoid)."""
     r = arcs.radius
     phi = 2 * math.acos(max(-1.0, 1 - eps / r))
     tot = 0
@@ -185,6 +240,7 @@ def minimum(arcs, eps):
         b = ring[:, 2]
         sw = np.abs(4 * np.arctan(b[b != 0]))
         tot += int(np.ceil(sw / phi).sum())
+        tot += int(((b == 0) & (np.roll(b, 1) == 0)).sum())
     return tot
 
 
@@ -192,7 +248,10 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--quick", action="store_true", help="1e-2 and 1e-4 only")
+    ap.add_argument("--no-cgal", action="store_true", help="skip CGAL")
     args = ap.parse_args(argv)
+    driver = None if args.no_cgal else build_driver()
+    cgal_ratio = []
     rels = (1e-2, 1e-4) if args.quick else (1e-2, 1e-4, 1e-6)
     tools = ["mk-outer", "mk-inner", "shapely", "pyclipper", "pyclipr"]
     ratios = {t: [] for t in tools}
@@ -200,7 +259,7 @@ def main(argv=None) -> int:
     print(f"python {sys.version.split()[0]}, shapely {shapely.__version__} "
           f"(GEOS {shapely.geos_version_string}), best of {args.repeat}")  # fmt: skip
     hdr = (f"{'case':16s} {'tool':9s} {'ms':>8s} {'verts':>7s} {'/min':>5s} {'out/ε':>7s} "
-           f"{'in/ε':>7s} {'cont':>5s} {'valid':>5s}")  # fmt: skip
+           f"{'in/ε':>7s} {'⊇true':>5s} {'valid':>5s}")  # fmt: skip
     for rel in rels:
         print(f"\n=== ε = {rel:g}·r ===")
         print(hdr)
@@ -243,11 +302,20 @@ def main(argv=None) -> int:
                         goals[name] = t
             for tool in tools:
                 ratios[tool].append(row[tool] / row["pyclipper"])
+            cg = run_cgal(driver, g, d, eps, args.repeat) if driver else None
+            if cg is not None:
+                t, pieces, comps, holes = cg
+                cgal_ratio.append(t / row["pyclipper"])
+                print(f"{name:16s} {'cgal-apx':9s} {t * 1e3:8.2f} {pieces:7d} pieces, "
+                      f"{comps} parts, {holes} holes (one-sided by construction)")  # fmt: skip
             if name.startswith("star1000+") and rel == 1e-4:
                 goals["arcs"] = ta
     print("\n=== geometric mean of time / pyclipper's time, over all cases and tolerances ===")
     for tool in tools:
         print(f"{tool:10s} {math.exp(np.mean(np.log(ratios[tool]))):6.3f}")
+    if cgal_ratio:
+        print(f"{'cgal-apx':10s} {math.exp(np.mean(np.log(cgal_ratio))):6.3f}  "
+              f"(its {len(cgal_ratio)} cases: simple polygons)")  # fmt: skip
     print("\n=== goals (1000-vertex star, radii 1/0.8, r = 0.002, ε = 1e-4·r) ===")
     for k, lim in (("star1000+", 50), ("star1000-", 20), ("arcs", 10)):
         if k in goals:
