@@ -782,9 +782,17 @@ def offset(
 #: coordinate is written as a straight segment (it cannot be told from one in float64).
 ARC_STRAIGHT_ULPS = 4
 
-#: The relative tolerance of the polygon that :func:`offset_arcs` traces to find which
-#: moved edges and arcs bound the offset, and in which order.
-_TRACE_TOLERANCE = 1e-2
+#: A traced junction nearer to the polygon than ``r − _JUNCTION_SLACK · (max |x| + r)``
+#: is not on the true boundary (a piece was too short for the trace): the nearest feature
+#: is inserted there, at most ``_MAX_REPAIRS`` rounds.
+_JUNCTION_SLACK = 2.0**-30
+_MAX_REPAIRS = 8
+
+#: The relative tolerances of the polygons that :func:`offset_arcs` traces to find which
+#: moved edges and arcs bound the offset, and in which order: the next one is tried when
+#: a junction of the result is not at distance r (± the slack) from the polygon, or a
+#: piece runs backwards.
+_TRACE_TOLERANCES = (1e-2, 1e-4, 1e-6)
 
 
 class OffsetArcs:
@@ -802,6 +810,12 @@ class OffsetArcs:
         ``|distance|``: the radius of every arc.
     distance : float
         The signed offset distance.
+    verified : bool
+        True when every junction was checked to lie at distance ``r`` from the polygon
+        (to ``2**-30`` of the coordinates' magnitude), every piece to run forwards within
+        its moved edge or its vertex's normal cone, and the area and topology to agree
+        with the traced polygon. False (rare, near critical radii of several merging
+        parts) means the best plausible tracing is returned unverified.
 
     Examples
     --------
@@ -814,12 +828,15 @@ class OffsetArcs:
     True
     """
 
-    __slots__ = ("polygons", "radius", "distance", "_source")
+    __slots__ = ("polygons", "radius", "distance", "verified", "_source")
 
-    def __init__(self, polygons: list, distance: float, source: Any = None) -> None:
+    def __init__(
+        self, polygons: list, distance: float, source: Any = None, verified: bool = True
+    ) -> None:
         self.polygons = polygons
         self.distance = float(distance)
         self.radius = abs(float(distance))
+        self.verified = verified
         self._source = source
 
     def __repr__(self) -> str:
@@ -963,7 +980,7 @@ def _num(v: float) -> str:
     return repr(v).removesuffix(".0") if v.is_integer() else repr(v)
 
 
-def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r) -> np.ndarray:
+def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r, sign) -> np.ndarray:
     """Where piece ``labels[q - 1]`` meets piece ``labels[q]`` (moved edge ``i >= 0`` or
     the arc of vertex ``-1 - i``): the tangent point, or the crossing of the two carriers
     (line/line, line/circle, circle/circle) nearest to ``near[q]``; a near-miss (the
@@ -974,11 +991,18 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r) -> np.ndarray:
     la, lb = a >= 0, b >= 0
     ia, ib = np.where(la, a, 0), np.where(lb, b, 0)
     va, vb = np.where(la, 0, -1 - a), np.where(lb, 0, -1 - b)
-    # line -> its end vertex's arc, arc -> its vertex's next line: tangent points
-    t1 = la & ~lb & (VE[ia] == vb)
-    t2 = ~la & lb & (VS[ib] == va)
-    J[t1] = MA1[ia[t1]]
-    J[t2] = MA0[ib[t2]]
+    # line -> its end vertex's arc, arc -> its vertex's next line: tangent points (a
+    # shrink's rings run backwards along the rings' edges)
+    if sign > 0:
+        t1 = la & ~lb & (VE[ia] == vb)
+        t2 = ~la & lb & (VS[ib] == va)
+        J[t1] = MA1[ia[t1]]
+        J[t2] = MA0[ib[t2]]
+    else:
+        t1 = la & ~lb & (VS[ia] == vb)
+        t2 = ~la & lb & (VE[ib] == va)
+        J[t1] = MA0[ia[t1]]
+        J[t2] = MA1[ib[t2]]
     rest = ~(t1 | t2)
     # line / line
     ll = rest & la & lb
@@ -1027,7 +1051,9 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r) -> np.ndarray:
     return J
 
 
-def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
+def _trace(
+    items: list, rings: list[np.ndarray], r: float, sign: float, repairs: int = _MAX_REPAIRS
+) -> tuple[list, bool]:
     """Exact rings of segments and arcs.
 
     ``items``: polygons, each a list of rings ``(coords, labels)`` tracing the offset
@@ -1058,15 +1084,66 @@ def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
     U = D / L[:, None]
     N = np.column_stack([U[:, 1], -U[:, 0]])
     MA0, MA1 = A0 + r * N, A1 + r * N  # the moved edges
+    # exterior angle of each vertex on the offset side (0 where it is not convex)
+    ein = np.empty(len(V), np.int64)
+    eout = np.empty(len(V), np.int64)
+    ein[VE] = np.arange(len(VE))
+    eout[VS] = np.arange(len(VS))
+    ui, uo = U[ein], U[eout]
+    theta = np.maximum(
+        np.arctan2(ui[:, 0] * uo[:, 1] - ui[:, 1] * uo[:, 0], (ui * uo).sum(axis=1)), 0.0
+    )
+    alpha_in = np.arctan2(N[ein, 1], N[ein, 0])  # where each vertex's arc starts
     tree = None
+    verified = [True]
     big = max(float(np.abs(V).max()), r)
     tiny = ARC_STRAIGHT_ULPS * math.ulp(big)
+    slack = _JUNCTION_SLACK * (big + r)
+
+    def extents(la, J, strict=False):
+        """Each piece's extent, negative when it runs backwards: along its moved edge
+        (a shrink's rings run against the reversed rings' edges), or the room left in
+        its vertex's exterior angle for an arc. ``strict``: also negative when the piece
+        leaves its moved edge's segment or its arc's normal cone."""
+        J1 = np.roll(J, -1, 0)
+        ext = np.full(len(la), np.inf)
+        ln = la >= 0
+        e = la[ln]
+        t0 = ((J[ln] - MA0[e]) * U[e]).sum(axis=1)
+        t1 = ((J1[ln] - MA0[e]) * U[e]).sum(axis=1)
+        ext[ln] = sign * (t1 - t0) + slack
+        if strict:
+            lo, hi = np.minimum(t0, t1), np.maximum(t0, t1)
+            ext[ln] = np.minimum(ext[ln], np.minimum(lo + slack, L[e] + slack - hi))
+        ar = ~ln
+        if ar.any():
+            v = -1 - la[ar]
+            ctr = V[v]
+            a0 = np.arctan2(J[ar, 1] - ctr[:, 1], J[ar, 0] - ctr[:, 0])
+            a1 = np.arctan2(J1[ar, 1] - ctr[:, 1], J1[ar, 0] - ctr[:, 0])
+            sw = np.mod(sign * (a1 - a0), 2 * math.pi)
+            # a closed full turn (one arc alone) has sweep 0 here: fine
+            ext[ar] = theta[v] + slack / r - sw
+            if strict:
+                first = a0 if sign > 0 else a1  # the end nearer the incoming normal
+                off = np.mod(first - alpha_in[v] + slack / r, 2 * math.pi) - slack / r
+                ext[ar] = np.minimum(ext[ar], theta[v] + slack / r - (off + sw))
+        return ext
+
+    def nearest(pts):
+        """Label of the nearest feature (edge interior or vertex) and its distance."""
+        qi, ei = tree.query_nearest(shapely.points(pts), all_matches=False)
+        e = np.empty(len(pts), np.int64)
+        e[qi] = ei
+        t = ((pts - A0[e]) * U[e]).sum(axis=1)
+        lab = np.where(t <= 0, -1 - VS[e], np.where(t >= L[e], -1 - VE[e], e))
+        foot = A0[e] + np.clip(t, 0, L[e])[:, None] * U[e]
+        return lab, np.hypot(*(pts - foot).T)
 
     polys = []
     for item in items:
         out_rings = []
         for c, lab in item:
-            k = len(c)
             if lab is not None:
                 ring_k, loc = lab
                 if (loc == _DETOUR).any():
@@ -1074,15 +1151,11 @@ def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
                 else:
                     b0 = ebase[ring_k]
                     lab = np.where(loc >= 0, loc + b0, loc - b0)
-            if lab is None:
+            traced = lab is None
+            if traced:
                 if tree is None:
                     tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
-                mid = (c + np.roll(c, -1, 0)) / 2
-                qi, ei = tree.query_nearest(shapely.points(mid), all_matches=False)
-                e = np.empty(k, np.int64)
-                e[qi] = ei
-                t = ((mid - A0[e]) * U[e]).sum(axis=1)
-                lab = np.where(t <= 0, -1 - VS[e], np.where(t >= L[e], -1 - VE[e], e))
+                lab, _ = nearest((c + np.roll(c, -1, 0)) / 2)
             chg = np.flatnonzero(lab != np.roll(lab, 1))
             if len(chg) == 0:
                 if lab[0] >= 0:
@@ -1098,8 +1171,58 @@ def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
                 )
                 continue
             labels = lab[chg].tolist()
+            near = c[chg]
+            # two moved edges that meet at a convex vertex meet through its arc (a
+            # one-corner arc polygon has no segment of its own to carry the label)
+            la = np.array(labels)
+            lp = np.roll(la, 1)
+            # in the rings' own order, edge e0 comes before e1 (a shrink runs backwards)
+            e0, e1 = (lp, la) if sign > 0 else (la, lp)
+            e0c, e1c = np.maximum(e0, 0), np.maximum(e1, 0)
+            adj = np.flatnonzero((la >= 0) & (lp >= 0) & (VE[e0c] == VS[e1c]))
+            if len(adj):
+                turn = orient_array(A0[e0c[adj]], A1[e0c[adj]], A1[e1c[adj]])
+                for q in adj[turn > 0][::-1]:
+                    labels.insert(int(q), int(-1 - VS[e1c[q]]))
+                    near = np.insert(near, q, near[q], axis=0)
+            J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
+            for _ in range(repairs):
+                # a piece whose exact extent is negative (a moved edge run backwards, an
+                # arc beyond its vertex's normals) is not on the true boundary: the trace
+                # was too coarse to see its neighbours meet first; drop it
+                la = np.array(labels)
+                if len(la) > 2:
+                    ext = extents(la, J)
+                    worst = int(np.argmin(ext))
+                    if ext[worst] < 0:
+                        del labels[worst]
+                        near = np.delete(near, worst, axis=0)
+                        J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
+                        continue
+                # a junction nearer than r to the polygon is not on the true boundary: a
+                # piece too short for the trace lies between; insert the nearest feature
+                if tree is None:
+                    tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
+                f, dist = nearest(J)
+                bad = np.flatnonzero(dist < r - slack)
+                changed = False
+                for q in bad[::-1]:
+                    if f[q] in (labels[q - 1], labels[q]):
+                        continue
+                    labels.insert(int(q), int(f[q]))
+                    near = np.insert(near, q, J[q], axis=0)
+                    changed = True
+                if not changed:
+                    break
+                J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
+            # verify: every junction on the true boundary, every piece of positive extent
+            if tree is None:
+                tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
+            _, dist = nearest(J)
+            ext = extents(np.array(labels), J, strict=True)
+            if (np.abs(dist - r) > slack).any() or (ext < 0).any():
+                verified[0] = False
             g = len(labels)
-            J = _junctions(np.array(labels), c[chg], MA0, MA1, U, V, VS, VE, r)
             rows = np.empty((g, 5))
             rows[:, :2] = J
             rows[:, 2] = 0.0
@@ -1128,7 +1251,7 @@ def _trace(items: list, rings: list[np.ndarray], r: float, sign: float) -> list:
                 out_rings.append(np.roll(rows, -first, 0))
         if out_rings:
             polys.append(out_rings)
-    return polys
+    return polys, verified[0]
 
 
 def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
@@ -1189,34 +1312,53 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
         r = abs(d)
         ring = np.array([[cx + r, cy, 1.0, cx, cy], [cx - r, cy, 1.0, cx, cy]])
         return OffsetArcs([[ring]], d, polygon)
-    info: dict = {}
-    region = _offset_one(
-        polygon,
-        d,
-        _TRACE_TOLERANCE * abs(d),
-        "outer",
-        "round",
-        2.0,
-        read=(rings, geom),
-        info=info,
-    )
-    if region.is_empty:
-        return OffsetArcs([], d, polygon)
     import shapely
 
-    if info["fast"]:
-        closed, labels = info["closed"], info["labels"]
-        # each closed curve came from ring k of the rings (same order)
-        items = [[(closed[k], (k, labels[k])) for k in g] for g in info["groups"]]
-    else:
-        items = [
-            [(shapely.get_coordinates(x)[:-1], None) for x in [p.exterior, *p.interiors]]
-            for p in shapely.get_parts(info["scaled"])
-        ]
+    best = None
+    for rel in _TRACE_TOLERANCES:
+        info: dict = {}
+        region = _offset_one(
+            polygon, d, rel * abs(d), "outer", "round", 2.0, read=(rings, geom), info=info
+        )
+        if region.is_empty:
+            return OffsetArcs([], d, polygon)
+        if info["fast"]:
+            closed, labels = info["closed"], info["labels"]
+            # each closed curve came from ring k of the rings (same order)
+            items = [[(closed[k], (k, labels[k])) for k in g] for g in info["groups"]]
+        else:
+            items = [
+                [(shapely.get_coordinates(x)[:-1], None) for x in [p.exterior, *p.interiors]]
+                for p in shapely.get_parts(info["scaled"])
+            ]
+        # the exact set lies inside the traced outer polygon, within a band of width
+        # rel·r along its boundary, and it has the traced polygon's topology
+        reg = info["scaled"]
+        parts = shapely.get_parts(reg)
+        holes = int(shapely.get_num_interior_rings(parts).sum())
+        band = reg.length * rel * info["r"]
+        slack_a = _JUNCTION_SLACK * reg.area
+        for repairs in (0, _MAX_REPAIRS):
+            polys, ok = _trace(items, info["rings"], info["r"], 1.0 if d > 0 else -1.0, repairs)
+            area = OffsetArcs(polys, info["r"]).area
+            plausible = (
+                len(polys) == len(parts)
+                and sum(len(p) - 1 for p in polys) == holes
+                and reg.area - band - slack_a <= area <= reg.area + slack_a
+            )
+            if plausible and best is None:
+                best = (polys, info)
+            if ok and plausible:
+                break
+        if ok and plausible:
+            best = (polys, info)
+            break
+    verified = bool(ok and plausible)
+    if best is not None:
+        polys, info = best
     s = info["scale"]
-    polys = _trace(items, info["rings"], info["r"], 1.0 if d > 0 else -1.0)
     if s != 1.0:
         for p in polys:
             for ring in p:
                 ring[:, [0, 1, 3, 4]] /= s
-    return OffsetArcs(polys, d, polygon)
+    return OffsetArcs(polys, d, polygon, verified)
