@@ -416,6 +416,7 @@ def _ring_signed_area(ring, radius):
 def test_arcs_exact_boundary(name, distance):
     poly = CASES[name]
     arcs = mk.offset_arcs(poly, distance)
+    assert arcs.verified
     P = shapely.orient_polygons(poly if hasattr(poly, "geom_type") else shapely.Polygon(poly))
     verts = {tuple(v) for v in shapely.get_coordinates(P).tolist()}
     r = abs(distance)
@@ -504,3 +505,18 @@ def test_cli_offset(tmp_path, capsys):
     # a round join without tolerance cannot be written as a polygon: one line, status 2
     assert main(["offset", str(src), "-r", "1", "--format", "wkt"]) == 2
     assert "tolerance" in capsys.readouterr().err
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    g=st.one_of(star_polygon(), star_polygon(holed=True)),
+    r=st.floats(0.05, 6),
+    grow=st.booleans(),
+)
+def test_random_arcs_area(g, r, grow):
+    d = r if grow else -r
+    arcs = mk.offset_arcs(g, d)
+    outer = mk.offset(g, d, tolerance=1e-7 * r)
+    inner = mk.offset(g, d, tolerance=1e-7 * r, approx="inner")
+    if arcs.verified:
+        assert inner.area - 1e-9 <= arcs.area <= outer.area + 1e-9
