@@ -28,12 +28,22 @@ For a grow ``P ⊕ D(r + ε) = (P ⊕ D(r)) ⊕ D(ε)``, so "within ε" is the H
 An erosion is not continuous in ``r`` (a neck of width ``2r`` closes), so for a shrink the
 guarantee is stated, as above, as a sandwich between the erosions by ``r`` and ``r ∓ ε``.
 
+The pieces' boundaries telescope into the *offset curve* (moved edges, arc polygons at
+convex vertices, a detour through each reflex vertex) plus ``∂P``, so a grow is where the
+curve's winding number is positive. Trimmed at every reflex vertex where the two moved
+edges cross (the cut-off loop lies inside both neighbouring pieces), the curve is usually
+a set of disjoint simple rings: then, checked by one GEOS validity test, they *are* the
+result and no Boolean operation runs. Otherwise (a gap, slot or hole closes, a shrink
+splits or erases parts) GEOS unions the pieces, merged first into chunks of consecutive
+pieces whose rings are simple (each then bounds exactly its pieces' union).
+
 The unions are computed by GEOS in float64. Their vertices are rounded, so the pieces are
 built for the radius ``r ± m`` with the *rounding margin* ``m = ROUNDING_MARGIN · (max |x| +
 r)`` (:data:`ROUNDING_MARGIN` = 2⁻⁴²): a vertex moved by rounding can never cross the
 true boundary, and the arcs get the budget ``ε − 2m``. A tolerance below ``4m`` cannot be
-met in float64 and raises :class:`~minkowski2d.errors.GeometryError`. The input is
-rescaled by a power of two (exact) into GEOS's comfortable range and back; Fractions and
+met in float64 and raises :class:`~minkowski2d.errors.GeometryError`. An input whose
+magnitude lies outside ``[2**-256, 2**256]`` is rescaled by a power of two (exact) into
+GEOS's comfortable range and back; Fractions and
 integers beyond 2⁵³ are rounded to float64 once (also within the margin).
 
 Examples
