@@ -520,3 +520,13 @@ def test_random_arcs_area(g, r, grow):
     inner = mk.offset(g, d, tolerance=1e-7 * r, approx="inner")
     if arcs.verified:
         assert inner.area - 1e-9 <= arcs.area <= outer.area + 1e-9
+
+
+def test_touching_parts_and_degenerate_inputs():
+    two = shapely.MultiPolygon([shapely.box(0, 0, 1, 1), shapely.box(1, 0, 2, 1)])
+    out = check_offset(two, 0.1, 1e-3, "outer")
+    assert counts(out) == (1, 0)
+    # collinear points are the segment they span
+    s = mk.offset([(0, 0), (1, 1), (2, 2)], 1, tolerance=1e-3, approx="inner")
+    assert 4 * math.sqrt(2) + math.pi * 0.999 < s.area < 4 * math.sqrt(2) + math.pi
+    assert mk.offset(SQUARE, 0, tolerance=1e-3).equals(shapely.Polygon(SQUARE))

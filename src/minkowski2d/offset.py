@@ -165,6 +165,11 @@ def _check_shapely(geom: Any, name: str) -> Any:
         raise NonFiniteError(
             f"{name}: a coordinate is not finite", argument=name, hint="remove NaN and inf"
         )
+    if not shapely.is_valid(geom) and gt == "MultiPolygon":
+        parts = shapely.get_parts(geom)
+        if shapely.is_valid(parts).all():
+            # parts that touch or overlap: their union has the same offset
+            geom = shapely.union_all(parts)
     if not shapely.is_valid(geom):
         reason = shapely.is_valid_reason(geom)
         if not reason.startswith("Interior is disconnected"):
@@ -1022,7 +1027,7 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r, sign) -> np.ndarray:
         den = u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
         with np.errstate(all="ignore"):
             t = ((q[:, 0] - p[:, 0]) * v[:, 1] - (q[:, 1] - p[:, 1]) * v[:, 0]) / den
-        X = p + t[:, None] * u
+            X = p + t[:, None] * u
         ok = den != 0
         J[np.flatnonzero(ll)[ok]] = X[ok]
     # line / circle (either order)
