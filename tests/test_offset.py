@@ -524,7 +524,8 @@ def test_random_arcs_area(g, r, grow):
 
 def test_touching_parts_and_degenerate_inputs():
     two = shapely.MultiPolygon([shapely.box(0, 0, 1, 1), shapely.box(1, 0, 2, 1)])
-    out = check_offset(two, 0.1, 1e-3, "outer")
+    out = mk.offset(two, 0.1, tolerance=1e-3)
+    check_offset(shapely.box(0, 0, 2, 1), 0.1, 1e-3, "outer", out=out)  # their union
     assert counts(out) == (1, 0)
     # collinear points are the segment they span
     s = mk.offset([(0, 0), (1, 1), (2, 2)], 1, tolerance=1e-3, approx="inner")
