@@ -278,7 +278,20 @@ class _Curve:
     edges, with ``trim[j]`` when it lies on both of them.
     """
 
-    __slots__ = ("ring", "n", "convex", "chain", "T", "E", "X", "trim", "S")
+    __slots__ = (
+        "ring",
+        "n",
+        "convex",
+        "chain",
+        "T",
+        "E",
+        "X",
+        "trim",
+        "S",
+        "allc",
+        "cstart",
+        "ccnt",
+    )
 
     def __init__(self, ring, rho, step, kind, join, limit, sgn=None):
         self.ring = ring
@@ -342,6 +355,13 @@ class _Curve:
                     q2 = self.T[j] - t[j] * u[j]
                     chain[j] = np.vstack([q1, q2])
         self.chain = chain
+        if join != "round":
+            ccnt = np.array([0 if c is None else len(c) for c in chain], np.int64)
+            cstart = np.cumsum(ccnt) - ccnt
+            allc = np.concatenate([c for c in chain if c is not None] or [np.empty((0, 2))])
+        else:
+            ccnt, cstart = cnt, start
+        self.allc, self.cstart, self.ccnt = allc, cstart, ccnt
         # S[i]: where the moved edge i starts on the curve
         S = self.T.copy()
         for j in np.flatnonzero(convex):
@@ -373,24 +393,39 @@ class _Curve:
         """The whole curve, trimmed at every trimmable reflex vertex, and a label for
         each of its segments (point ``k`` to ``k + 1``): edge ``i`` moved (``i``), the arc
         of vertex ``j`` (``-1 - j``), or a detour through a vertex (:data:`_DETOUR`)."""
-        out, lab = [], []
         n, conv, trim = self.n, self.convex, self.trim
-        for i in range(n):
-            if not conv[i] and not trim[i]:
-                out.append(self.T[i][None, :])
-                lab.append([i])
-            b = (i + 1) % n
-            if conv[b]:
-                c = self.chain[b]
-                out.append(c)
-                lab.append([-1 - b] * (len(c) - 1) + [b])
-            elif trim[b]:
-                out.append(self.X[b][None, :])
-                lab.append([b])
-            else:
-                out.append(np.vstack([self.E[b], self.ring[b]]))
-                lab.append([_DETOUR, _DETOUR])
-        return np.concatenate(out), np.concatenate(lab).astype(np.int64)
+        b = np.arange(1, n + 1) % n
+        head = (~conv & ~trim).astype(np.int64)  # T_i before the edge's tail
+        cb, tb = conv[b], trim[b]
+        tcnt = np.where(cb, self.ccnt[b], np.where(tb, 1, 2))
+        per = head + tcnt
+        off = np.cumsum(per) - per
+        total = int(per.sum())
+        # every point's source: T (n), chain corners, X (n), E (n), ring (n)
+        nc = len(self.allc)
+        src = np.concatenate([self.T, self.allc, self.X, self.E, self.ring])
+        bT, bC, bX, bE, bR = 0, n, n + nc, 2 * n + nc, 3 * n + nc
+        idx = np.empty(total, np.int64)
+        lab = np.empty(total, np.int64)
+        hi = np.flatnonzero(head)
+        idx[off[hi]] = bT + hi
+        lab[off[hi]] = hi
+        # tails: position within the tail j, edge e
+        e = np.repeat(np.arange(n), tcnt)
+        j = np.arange(int(tcnt.sum())) - np.repeat(np.cumsum(tcnt) - tcnt, tcnt)
+        pos = off[e] + head[e] + j
+        be = b[e]
+        isc = cb[e]
+        ist = ~isc & tb[e]
+        isd = ~isc & ~tb[e]
+        idx[pos[isc]] = bC + self.cstart[be[isc]] + j[isc]
+        last = j == self.ccnt[be] - 1
+        lab[pos[isc]] = np.where(last[isc], be[isc], -1 - be[isc])
+        idx[pos[ist]] = bX + be[ist]
+        lab[pos[ist]] = be[ist]
+        idx[pos[isd]] = np.where(j[isd] == 0, bE, bR) + be[isd]
+        lab[pos[isd]] = _DETOUR
+        return src[idx], lab
 
     def chunk(self, i0: int, i1: int) -> np.ndarray:
         """The ring of edges ``i0..i1`` (inclusive, cyclic): from ``ring[i0]`` along the
