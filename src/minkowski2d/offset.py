@@ -206,6 +206,19 @@ def _read(obj: Any, name: str) -> tuple[list[np.ndarray], Any]:
     data = np.asarray(data, dtype=np.float64)
     if len(data) > 1 and (data[0] == data[-1]).all():
         data = data[:-1]
+    if len(data) >= 3:
+        # the common case: a valid ring with area (the float shoelace only picks this
+        # path; GEOS's robust orientation test decides the direction)
+        x, y = data[:, 0], data[:, 1]
+        with np.errstate(all="ignore"):
+            area2 = float(x @ np.roll(y, -1) - y @ np.roll(x, -1))
+        if area2 != 0.0 and math.isfinite(area2):
+            geom = shapely.Polygon(data)
+            if shapely.is_valid(geom):
+                if not shapely.is_ccw(geom.exterior):
+                    data = data[::-1].copy()
+                    geom = shapely.Polygon(data)
+                return [data], geom
     from .convex import convex_hull
 
     hull = np.asarray(convex_hull(data), dtype=np.float64)
