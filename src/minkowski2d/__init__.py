@@ -35,6 +35,7 @@ from .convex import (
 )
 from .errors import GeometryError
 from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
+from .offset import OffsetArcs, offset, offset_arcs
 from .trace import MergeTrace, merge_trace
 
 
@@ -79,6 +80,9 @@ __all__ = [
     "intersects_many",
     "distance_many",
     "penetration_many",
+    "offset",
+    "offset_arcs",
+    "OffsetArcs",
     "Distance",
     "Penetration",
     "__version__",

@@ -32,6 +32,7 @@ _PLUGINS = (
     "minkowski2d._cli_collision",
     "minkowski2d._cli_general",
     "minkowski2d._cli_features",
+    "minkowski2d._cli_offset",
 )
 
 SEED_A = [(0, 0), (2, 0), (0, 2)]

@@ -1,0 +1,327 @@
+"""Offsetting by a disk: minkowski2d against shapely (GEOS) buffer, pyclipper (Clipper 1)
+and pyclipr (Clipper 2), at tolerances 1e-2·r, 1e-4·r and 1e-6·r.
+
+For each input and tolerance ε, every tool is asked for the same offset with its own
+accuracy knob set to ε: shapely's ``quad_segs`` from ε (sagitta ≤ ε per quarter-circle
+chord), Clipper's ``arc_tolerance`` = ε (coordinates scaled to integers by 2⁴⁰ / max |x|).
+Reported per tool: the best time of a few runs, the vertex count and its ratio to the
+minimum (``Σ ceil(θ / 2·acos(1 − ε/r))`` over the arcs of the exact offset, from
+``mk.offset_arcs``), the error on each side in units of ε (``out``: how far the result
+reaches beyond the true offset's boundary, ``in``: how far it falls inside; measured at
+the vertices and, for ``in``, along every edge, with GEOS distances), whether it contains
+the true set (``in`` ≤ 0 up to 1e-9·r) and whether it is a valid polygon.
+
+CGAL: ``approximated_offset_2`` / ``approximated_inset_2`` with the same ε (one-sided
+outer by construction; its result is arcs with rational end points, reported as the
+number of pieces), through ``cgal_offset_driver.cpp`` built once with g++ -O2 against
+Debian's libcgal-dev into ``build/cgal_offset_driver``; simple polygons only, the time
+excludes reading the file and process start.
+
+Run: ``python benchmarks/bench_offset.py [--repeat 5] [--quick] [--no-cgal]``
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import shapely
+
+import minkowski2d as mk
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = ROOT.parent / "shared" / "data" / "cgal-minkowski"
+DRIVER_SRC = Path(__file__).with_name("cgal_offset_driver.cpp")
+DRIVER = ROOT / "build" / "cgal_offset_driver"
+
+
+def build_driver() -> str | None:
+    """Path of the CGAL offset driver, building it if needed; None (and why) if not."""
+    if DRIVER.exists() and DRIVER.stat().st_mtime >= DRIVER_SRC.stat().st_mtime:
+        return str(DRIVER)
+    if shutil.which("g++") is None:
+        print("CGAL: skipped (no g++)")
+        return None
+    if not Path("/usr/include/CGAL/approximated_offset_2.h").exists():
+        print("CGAL: skipped (libcgal-dev is not installed: apt-get install -y libcgal-dev)")
+        return None
+    DRIVER.parent.mkdir(exist_ok=True)
+    print("CGAL: building build/cgal_offset_driver (g++ -O2, about a minute) ...", flush=True)
+    cmd = ["g++", "-O2", "-std=c++17", str(DRIVER_SRC), "-o", str(DRIVER), "-lgmp", "-lmpfr"]
+    res = subprocess.run(cmd, capture_output=True, text=True)
+    if res.returncode:
+        print("CGAL: skipped (build failed):", res.stderr[-500:])
+        return None
+    return str(DRIVER)
+
+
+def run_cgal(driver: str, g, d: float, eps: float, repeat: int):
+    """(seconds, pieces, components, holes) of CGAL's approximated offset / inset of a
+    simple polygon (None for polygons with holes or on failure)."""
+    if g.geom_type != "Polygon" or len(g.interiors):
+        return None
+    c = shapely.get_coordinates(g.exterior)[:-1]
+    with tempfile.TemporaryDirectory() as tmp:
+        f = Path(tmp) / "p.dat"
+        f.write_text(f"{len(c)}\n" + "\n".join(f"{x!r} {y!r}" for x, y in c.tolist()) + "\n")
+        res = subprocess.run(
+            [driver, "approx", str(f), repr(d), repr(eps), str(repeat)],
+            capture_output=True,
+            text=True,
+            timeout=600,
+        )
+    if res.returncode:
+        return None
+    t, pieces, comps, holes = res.stdout.split()
+    return float(t), int(pieces), int(comps), int(holes)
+
+
+def star(n: int, R: float, r: float) -> np.ndarray:
+    k = np.arange(n)
+    rad = np.where(k % 2 == 0, R, r)
+    th = 2 * np.pi * k / n
+    return np.c_[rad * np.cos(th), rad * np.sin(th)]
+
+
+def cases() -> list:
+    """(name, polygon, distance)"""
+    sq = [(0, 0), (4, 0), (4, 4), (0, 4)]
+    L = [(0, 0), (4, 0), (4, 1), (1, 1), (1, 4), (0, 4)]
+    frame = shapely.Polygon(sq, [[(1, 1), (1, 3), (3, 3), (3, 1)]])
+    C = [(0, 0), (6, 0), (6, 6), (0, 6), (0, 3.5), (1, 3.5), (1, 5), (5, 5), (5, 1), (1, 1),
+         (1, 2.5), (0, 2.5)]  # fmt: skip
+    dumb = [(0, 0), (2, 0), (2, 0.5), (4, 0.5), (4, 0), (6, 0), (6, 2), (4, 2), (4, 1.5),
+            (2, 1.5), (2, 2), (0, 2)]  # fmt: skip
+    zig = [(0, 0), (1, 2), (2, 0), (3, 2), (4, 0), (5, 2), (6, 0), (6, -1), (0, -1)]
+    out = [
+        ("square", sq, 0.5),
+        ("L", L, 0.3),
+        ("frame", frame, 0.3),
+        ("C", C, 0.7),
+        ("dumbbell", dumb, 0.3),
+        ("zigzag", zig, 0.3),
+        ("star100", star(100, 1.0, 0.6), 0.02),
+        ("star1000", star(1000, 1.0, 0.8), 0.002),
+        ("star1000-wide", star(1000, 1.0, 0.6), 0.05),
+    ]
+    if DATA.exists():
+        from minkowski2d.io import read_cgal_dat
+
+        # radii as in CGAL's own test_approx_offset.cmd where given
+        for name, r in (("comb_part1", 1.0), ("random_part1", 5.0), ("rooms_part1", 3.0),
+                        ("pwh1", 0.3)):  # fmt: skip
+            p = DATA / f"{name}.dat"
+            if p.exists():
+                out.append((name, read_cgal_dat(p)[0], r))
+    res = []
+    for name, p, r in out:
+        res.append((name + "+", p, r))
+        # rooms_part1's walls are thinner than r: a shrink by r / 2 erases it
+        res.append((name + "-", p, -r / (12 if name == "rooms_part1" else 2)))
+    return res
+
+
+def as_shapely(p) -> shapely.Geometry:
+    g = p if hasattr(p, "geom_type") else shapely.Polygon(np.asarray(p, float))
+    return shapely.orient_polygons(g)
+
+
+# --------------------------------------------------------------------------------------
+# peers
+
+
+def run_shapely(g, d, eps):
+    r = abs(d)
+    q = max(1, math.ceil((math.pi / 2) / (2 * math.acos(max(-1.0, 1 - eps / r)))))
+    return lambda: shapely.buffer(g, d, quad_segs=q)
+
+
+def _rings(g):
+    return [shapely.get_coordinates(x)[:-1] for x in shapely.get_rings(shapely.get_parts(g))]
+
+
+def _from_paths(paths):
+    polys = [shapely.Polygon(p) for p in paths if len(p) >= 3]
+    polys.sort(key=lambda x: -abs(x.area))
+    if not polys:
+        return shapely.Polygon()
+    g = polys[0]
+    for h in polys[1:]:
+        g = shapely.symmetric_difference(g, h)
+    return g
+
+
+def run_pyclipper(g, d, eps):
+    import pyclipper
+
+    rings = _rings(g)
+    S = 2.0**40 / max(float(np.abs(np.concatenate(rings)).max()), abs(d))
+    paths = [np.rint(x * S).astype(np.int64).tolist() for x in rings]
+
+    def f():
+        co = pyclipper.PyclipperOffset(2.0, eps * S)
+        co.AddPaths(paths, pyclipper.JT_ROUND, pyclipper.ET_CLOSEDPOLYGON)
+        return co.Execute(d * S)
+
+    return f, lambda res: _from_paths([np.asarray(p, float) / S for p in res])
+
+
+def run_pyclipr(g, d, eps):
+    import pyclipr
+
+    rings = _rings(g)
+    S = 2.0**40 / max(float(np.abs(np.concatenate(rings)).max()), abs(d))
+
+    def f():
+        co = pyclipr.ClipperOffset()
+        co.scaleFactor = int(S)
+        co.arcTolerance = eps * int(S)
+        co.addPaths(rings, pyclipr.JoinType.Round, pyclipr.EndType.Polygon)
+        return co.execute(d)
+
+    return f, lambda res: _from_paths([np.asarray(p, float) for p in res])
+
+
+# --------------------------------------------------------------------------------------
+# measurement
+
+
+def best(f, repeat):
+    t = math.inf
+    res = None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        res = f()
+        t = min(t, time.perf_counter() - t0)
+    return t, res
+
+
+def errors(out, P, d):
+    """(out, in): how far the boundary of ``out`` reaches beyond / falls inside the true
+    offset's boundary (GEOS float distances)."""
+    r = abs(d)
+    if out.is_empty:
+        return math.nan, math.nan
+    ref = P if d > 0 else shapely.boundary(P)
+    E = np.concatenate(
+        [np.stack([c[:-1], c[1:]], 1) for c in
+         (shapely.get_coordinates(x) for x in shapely.get_rings(shapely.get_parts(out)))]
+    )  # fmt: skip
+    tree = shapely.STRtree(
+        np.concatenate(
+            [shapely.linestrings(np.stack([c[:-1], c[1:]], 1)) for c in
+             (shapely.get_coordinates(x) for x in shapely.get_rings(shapely.get_parts(P)))]
+        )
+    )  # fmt: skip
+    _, dv = tree.query_nearest(shapely.points(E[:, 0]), return_distance=True, all_matches=False)
+    _, de = tree.query_nearest(shapely.linestrings(E), return_distance=True, all_matches=False)
+    del ref
+    if d > 0:  # signed: positive = beyond the true boundary (outside the true set)
+        s_vert, s_edge = dv - r, de - r
+    else:
+        s_vert, s_edge = r - dv, r - de
+    return max(0.0, float(s_vert.max())), max(0.0, float(-min(s_edge.min(), s_vert.min())))
+
+
+def minimum(arcs, eps):
+    """Σ ceil(θ / 2·acos(1 − ε/r)) over the arcs, plus one vertex per junction of two
+    straight pieces (a corner no approximation can avoid)."""
+    r = arcs.radius
+    phi = 2 * math.acos(max(-1.0, 1 - eps / r))
+    tot = 0
+    for ring in arcs.rings:
+        b = ring[:, 2]
+        sw = np.abs(4 * np.arctan(b[b != 0]))
+        tot += int(np.ceil(sw / phi).sum())
+        tot += int(((b == 0) & (np.roll(b, 1) == 0)).sum())
+    return tot
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--quick", action="store_true", help="1e-2 and 1e-4 only")
+    ap.add_argument("--no-cgal", action="store_true", help="skip CGAL")
+    args = ap.parse_args(argv)
+    driver = None if args.no_cgal else build_driver()
+    cgal_ratio = []
+    rels = (1e-2, 1e-4) if args.quick else (1e-2, 1e-4, 1e-6)
+    tools = ["mk-outer", "mk-inner", "shapely", "pyclipper", "pyclipr"]
+    ratios = {t: [] for t in tools}
+    goals = {}
+    print(f"python {sys.version.split()[0]}, shapely {shapely.__version__} "
+          f"(GEOS {shapely.geos_version_string}), best of {args.repeat}")  # fmt: skip
+    hdr = (f"{'case':16s} {'tool':9s} {'ms':>8s} {'verts':>7s} {'/min':>5s} {'out/ε':>7s} "
+           f"{'in/ε':>7s} {'⊇true':>5s} {'valid':>5s}")  # fmt: skip
+    for rel in rels:
+        print(f"\n=== ε = {rel:g}·r ===")
+        print(hdr)
+        for name, p, d in cases():
+            g = as_shapely(p)
+            r = abs(d)
+            eps = rel * r
+            ta, arcs = best(lambda p=p, d=d: mk.offset_arcs(p, d), args.repeat)
+            mn = max(1, minimum(arcs, eps))
+            if rel == rels[0]:
+                print(
+                    f"{name:16s} {'arcs':9s} {ta * 1e3:8.2f} {sum(len(x) for x in arcs.rings):7d}"
+                )
+            row = {}
+            for tool in tools:
+                if tool.startswith("mk"):
+                    ap_ = tool[3:]
+                    f = lambda p=p, d=d, eps=eps, ap_=ap_: mk.offset(  # noqa: E731
+                        p, d, tolerance=eps, approx=ap_
+                    )
+                    conv = None
+                elif tool == "shapely":
+                    f, conv = run_shapely(g, d, eps), None
+                elif tool == "pyclipper":
+                    f, conv = run_pyclipper(g, d, eps)
+                else:
+                    f, conv = run_pyclipr(g, d, eps)
+                t, res = best(f, args.repeat)
+                out = conv(res) if conv else res
+                eo, ei = errors(out, g, d)
+                nv = int(shapely.get_num_coordinates(out)) - len(shapely.get_rings(
+                    shapely.get_parts(out)))  # fmt: skip
+                cont = bool(ei <= 1e-9 * r) if not math.isnan(ei) else None
+                row[tool] = t
+                print(f"{name:16s} {tool:9s} {t * 1e3:8.2f} {nv:7d} {nv / mn:5.2f} "
+                      f"{eo / eps:7.2f} {ei / eps:7.2f} {str(cont):>5s} "
+                      f"{str(bool(out.is_valid)):>5s}")  # fmt: skip
+                if name.startswith("star1000+") or name.startswith("star1000-"):
+                    if rel == 1e-4 and tool == "mk-outer":
+                        goals[name] = t
+            for tool in tools:
+                ratios[tool].append(row[tool] / row["pyclipper"])
+            cg = run_cgal(driver, g, d, eps, args.repeat) if driver else None
+            if cg is not None:
+                t, pieces, comps, holes = cg
+                cgal_ratio.append(t / row["pyclipper"])
+                print(f"{name:16s} {'cgal-apx':9s} {t * 1e3:8.2f} {pieces:7d} pieces, "
+                      f"{comps} parts, {holes} holes (one-sided by construction)")  # fmt: skip
+            if name.startswith("star1000+") and rel == 1e-4:
+                goals["arcs"] = ta
+    print("\n=== geometric mean of time / pyclipper's time, over all cases and tolerances ===")
+    for tool in tools:
+        print(f"{tool:10s} {math.exp(np.mean(np.log(ratios[tool]))):6.3f}")
+    if cgal_ratio:
+        print(f"{'cgal-apx':10s} {math.exp(np.mean(np.log(cgal_ratio))):6.3f}  "
+              f"(its {len(cgal_ratio)} cases: simple polygons)")  # fmt: skip
+    print("\n=== goals (1000-vertex star, radii 1/0.8, r = 0.002, ε = 1e-4·r) ===")
+    for k, lim in (("star1000+", 50), ("star1000-", 20), ("arcs", 10)):
+        if k in goals:
+            print(f"{k:10s} {goals[k] * 1e3:7.2f} ms (goal ≤ {lim} ms)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
