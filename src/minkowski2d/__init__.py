@@ -33,7 +33,19 @@ from .convex import (
     translate,
 )
 from .errors import GeometryError
-from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
+from .general import (
+    convex_decomposition,
+    minkowski_difference,
+    minkowski_sum_general,
+    minkowski_sum_general_many,
+)
+from .nesting import (
+    degenerate_placements,
+    inner_fit_polygon,
+    no_fit_polygons,
+    pair_blocks,
+    read_esicup,
+)
 from .trace import MergeTrace, merge_trace
 
 __version__ = "0.1.0"
@@ -67,6 +79,12 @@ __all__ = [
     "minkowski_sum_general",
     "convex_decomposition",
     "minkowski_difference",
+    "minkowski_sum_general_many",
+    "no_fit_polygons",
+    "inner_fit_polygon",
+    "degenerate_placements",
+    "read_esicup",
+    "pair_blocks",
     "intersects",
     "distance",
     "penetration",

@@ -54,7 +54,12 @@ from .errors import (
     ShapeError,
 )
 
-__all__ = ["minkowski_sum_general", "convex_decomposition", "minkowski_difference"]
+__all__ = [
+    "minkowski_sum_general",
+    "minkowski_sum_general_many",
+    "convex_decomposition",
+    "minkowski_difference",
+]
 
 SUM_METHODS = ("decomposition", "convolution")
 DECOMPOSITIONS = ("hertel-mehlhorn", "triangulation")
@@ -885,6 +890,336 @@ def _sum(A: _Operand, B: _Operand, method: str | None, decomposition: str) -> An
             argument=f"{A.name}, {B.name}",
             hint="simplify the polygons (fewer reflex vertices)",
         ) from exc
+
+
+# --------------------------------------------------------------------------------------
+# many sums at once
+
+#: ``minkowski_sum_general_many``: a pair whose piece sums number at most this many is
+#: unioned together with other pairs of similar size in one vectorized GEOS call
+#: (``shapely.union_all(..., axis=1)``); larger ones go through the union in rounds.
+GROUP_UNION_MAX = 64
+#: Pairs are processed in chunks of at most this many piece sums (bounds the memory and
+#: paces the progress bar).
+CHUNK_SUMS = 1 << 16
+
+
+class _Prepared:
+    """One operand of a batch, validated and decomposed once: its exponent ``e`` (frexp
+    of the largest |coordinate|, None when all are zero), its convex pieces in the
+    caller's own units (float64, input vertices bit for bit), whether it is flat, and
+    the operand itself (built at its own scale) for the per-pair fallback."""
+
+    __slots__ = ("e", "pieces", "flat", "op", "k", "obj")
+
+    def __init__(self, obj: Any, name: str) -> None:
+        self.obj = obj
+        raw = _parse(obj, name)
+        self.e = raw.exponent()
+        self.k = SCALE_EXPONENT - self.e if self.e is not None else 0
+        self.op = _build(raw, self.k)
+        self.flat = self.op.flat is not None
+        ring = self.op.convex_ring
+        with _boundary(name, "decomposing the polygon"):
+            R = (
+                Ragged(ring, np.array([0, len(ring)], np.int64))
+                if ring is not None
+                else _pieces(self.op)
+            )
+        self.pieces = Ragged(np.ldexp(np.asarray(R.coords, np.float64), -self.k), R.offsets)
+
+
+def _many_operands(X: Any) -> tuple[list, bool]:
+    """The operands of a batch argument and whether it is a collection (else broadcast).
+
+    A Ragged, an object array, or a list / tuple whose first item is a ring (2-D) or a
+    shapely geometry (or None) is a collection; anything else is one operand."""
+    if isinstance(X, Ragged):
+        return X.to_list(), True
+    if isinstance(X, np.ndarray):
+        if X.dtype == object and X.ndim == 1:
+            return list(X), True
+        return [X], False
+    if type(X).__module__.startswith("shapely"):
+        return [X], False
+    if isinstance(X, (list, tuple)):
+        if len(X) == 0:
+            return [], True
+        x0 = X[0]
+        if x0 is None or type(x0).__module__.startswith("shapely") or np.ndim(x0) == 2:
+            return list(X), True
+    return [X], False
+
+
+def minkowski_sum_general_many(
+    As: Any,
+    Bs: Any,
+    *,
+    method: str = "auto",
+    progress: Any = None,
+    threads: int = 1,
+) -> np.ndarray:
+    """Non-convex Minkowski sums of many pairs of polygons in one call.
+
+    Parameters
+    ----------
+    As, Bs : sequence of operands, or one operand
+        Pairwise (equal counts) or one against many (one side a single operand, which is
+        broadcast). An operand is anything :func:`minkowski_sum_general` takes; ``None``
+        gives ``None``. A sequence whose items are rings or shapely geometries is a
+        collection of operands (one sum per item), unlike in
+        :func:`minkowski_sum_general`, where a list of polygons is one operand.
+    method : {"auto", "decomposition", "convolution"}
+        ``"auto"``: the decomposition for every pair whose pieces product is at most
+        ``MAX_PIECE_PAIRS``, the convolution for the others (the cost estimate is the
+        number of convex piece sums). The other values force one method for every pair.
+    progress : bool or callable, optional
+        ``True`` shows a tqdm bar (when tqdm is installed) over the pairs; a callable is
+        called as ``progress(done, total)`` after each chunk of pairs.
+    threads : int, default 1
+        Worker threads of the batched convex sums.
+
+    Returns
+    -------
+    numpy.ndarray of object
+        ``result[k]`` is ``minkowski_sum_general(As[k], Bs[k])`` (a Polygon or
+        MultiPolygon, the same set, normalized the same way).
+
+    Raises
+    ------
+    GeometryError
+        As :func:`minkowski_sum_general`, naming the operand (``As[k]``, ``Bs[k]``).
+    ShapeError
+        Unequal counts, or neither argument is a collection.
+
+    Notes
+    -----
+    Every distinct operand (the same Python object passed several times counts once) is
+    read, validated and decomposed once. The convex sums of all piece pairs of all
+    decomposed pairs are computed in one batched call on the caller's own coordinates
+    (exact for integers up to 2**52). Each pair's sums are then scaled by the pair's
+    power of two (as :func:`minkowski_sum_general` does) and unioned by GEOS: pairs of
+    similar size together in one vectorized ``union_all``, pairs with more than
+    ``GROUP_UNION_MAX`` sums in rounds that drop sums already covered.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    >>> sq = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    >>> out = mk.minkowski_sum_general_many([L, sq], L)
+    >>> [g.area for g in out]
+    [13.0, 8.0]
+    """
+    if method not in ("auto",) + SUM_METHODS:
+        raise ValueError(f"method must be one of {('auto',) + SUM_METHODS}, got {method!r}")
+    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
+        raise ValueError(f"threads must be a positive int, got {threads!r}")
+    la, many_a = _many_operands(As)
+    lb, many_b = _many_operands(Bs)
+    if not many_a and not many_b:
+        raise ShapeError(
+            "give a collection of polygons for As or Bs (or use minkowski_sum_general)",
+            argument="As, Bs",
+        )
+    if many_a and many_b and len(la) != len(lb):
+        raise ShapeError(
+            f"As has {len(la)} polygons but Bs has {len(lb)}; pairs need equal counts",
+            argument="As, Bs",
+        )
+    P = len(la) if many_a else len(lb)
+    out = np.empty(P, dtype=object)
+    na = (lambda q: f"As[{q}]") if many_a else (lambda q: "a")
+    nb = (lambda q: f"Bs[{q}]") if many_b else (lambda q: "b")
+    ga = (lambda q: la[q]) if many_a else (lambda q: la[0])
+    gb = (lambda q: lb[q]) if many_b else (lambda q: lb[0])
+
+    # read every distinct operand once
+    cache: dict[int, _Prepared] = {}
+
+    def prep(obj: Any, name: str) -> _Prepared:
+        key = id(obj)
+        p = cache.get(key)
+        if p is None:
+            p = cache[key] = _Prepared(obj, name)
+        return p
+
+    todo = []
+    for q in range(P):
+        a, b = ga(q), gb(q)
+        if a is None or b is None:
+            continue
+        pa, pb = prep(a, na(q)), prep(b, nb(q))
+        if pa.flat and pb.flat:
+            raise ShapeError(
+                f"{na(q)}, {nb(q)}: both operands are points or segments: the sum has no area",
+                argument=f"{na(q)}, {nb(q)}",
+            )
+        todo.append((q, pa, pb))
+    bar = _progress_bar(progress, len(todo))
+    try:
+        fallback = []
+        batch: list = []
+        sums_in_batch = 0
+        for item in todo:
+            q, pa, pb = item
+            npairs = len(pa.pieces) * len(pb.pieces)
+            if method == "convolution" or npairs > MAX_PIECE_PAIRS:
+                if method == "decomposition":
+                    _sum_decomposition(pa.op, pb.op, "hertel-mehlhorn", switch=False)
+                fallback.append(item)
+                continue
+            batch.append(item)
+            sums_in_batch += npairs
+            if sums_in_batch >= CHUNK_SUMS:
+                _many_decomposition(batch, out, na, nb, threads)
+                bar(len(batch))
+                batch, sums_in_batch = [], 0
+        if batch:
+            _many_decomposition(batch, out, na, nb, threads)
+            bar(len(batch))
+        for q, _pa, _pb in fallback:
+            m = "convolution" if method == "convolution" else None
+            with _boundary(f"{na(q)}, {nb(q)}", "computing the sum"):
+                out[q] = minkowski_sum_general(ga(q), gb(q), method=m)
+            bar(1)
+    finally:
+        bar(None)
+    return out
+
+
+def _progress_bar(progress: Any, total: int):
+    """``update(n)`` (``None`` closes) for a tqdm bar, a callable, or nothing."""
+    if progress is None or progress is False:
+        return lambda n: None
+    if callable(progress) and progress is not True:
+        state = [0]
+
+        def call(n):
+            if n is not None:
+                state[0] += n
+                progress(state[0], total)
+
+        return call
+    try:
+        from tqdm.auto import tqdm
+    except ImportError:  # pragma: no cover - tqdm is optional
+        return lambda n: None
+    t = tqdm(total=total, unit="pair", leave=False)
+    return lambda n: t.close() if n is None else t.update(n)
+
+
+def _many_decomposition(batch: list, out: np.ndarray, na, nb, threads: int) -> None:
+    """Sums of the pairs ``(q, prepared a, prepared b)`` by pieces, into ``out[q]``."""
+    import shapely
+
+    from ._core import _ext
+
+    # one coordinate array holding every operand's pieces
+    ops: dict[int, tuple[int, _Prepared]] = {}
+    chunks = []
+    base = 0
+    pbase = 0
+    for _, pa, pb in batch:
+        for p in (pa, pb):
+            if id(p) not in ops:
+                ops[id(p)] = (pbase, base, p)
+                chunks.append(p.pieces)
+                base += len(p.pieces.coords)
+                pbase += len(p.pieces)
+    C = np.ascontiguousarray(np.concatenate([np.asarray(r.coords, np.float64) for r in chunks]))
+    lo = np.concatenate([r.offsets[:-1] + s for r, s in zip(chunks, _starts(chunks), strict=True)])
+    hi = np.concatenate([r.offsets[1:] + s for r, s in zip(chunks, _starts(chunks), strict=True)])
+    # piece index ranges of every pair; pair q has na_q * nb_q sums
+    a0 = np.array([ops[id(pa)][0] for _, pa, _ in batch], np.int64)
+    b0 = np.array([ops[id(pb)][0] for _, _, pb in batch], np.int64)
+    ca = np.array([len(pa.pieces) for _, pa, _ in batch], np.int64)
+    cb = np.array([len(pb.pieces) for _, _, pb in batch], np.int64)
+    cnt = ca * cb
+    pair_of = np.repeat(np.arange(len(batch)), cnt)
+    local = np.arange(cnt.sum()) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+    ia = a0[pair_of] + local // cb[pair_of]
+    ib = b0[pair_of] + local % cb[pair_of]
+    coords, off, code, *_ = _ext.sum_batch_f(C, lo[ia], hi[ia], C, lo[ib], hi[ib], threads)
+    if code:
+        # a range or overflow problem: the one-pair path computes it or raises
+        for q, pa, pb in batch:
+            with _boundary(f"{na(q)}, {nb(q)}", "computing the sum"):
+                out[q] = minkowski_sum_general(pa.obj, pb.obj)
+        return
+    # each pair's common scale, as in minkowski_sum_general
+    ks = np.array(
+        [SCALE_EXPONENT - max(e for e in (pa.e, pb.e) if e is not None) for _, pa, pb in batch],
+        np.int64,
+    )
+    nv = np.diff(off)
+    kv = np.repeat(ks[pair_of], nv)
+    with np.errstate(over="ignore", under="ignore"):
+        scaled = np.ldexp(coords, kv[:, None])
+    names = [f"{na(q)}, {nb(q)}" for q, _, _ in batch]
+    with _boundary(names[0] if len(batch) == 1 else "As, Bs", "uniting the piece sums"):
+        polys = _ragged_polygons(scaled, off)
+        first = np.cumsum(cnt) - cnt
+        res = np.empty(len(batch), dtype=object)
+        single = cnt == 1
+        res[single] = polys[first[single]]
+        # pairs of similar size together: one vectorized union per size class
+        mid = np.flatnonzero((cnt > 1) & (cnt <= GROUP_UNION_MAX))
+        if len(mid):
+            width = 1 << np.ceil(np.log2(cnt[mid])).astype(np.int64)
+            for w in np.unique(width):
+                sel = mid[width == w]
+                grid = np.full((len(sel), int(w)), None, dtype=object)
+                rows = np.repeat(np.arange(len(sel)), cnt[sel])
+                cols = np.arange(cnt[sel].sum()) - np.repeat(
+                    np.cumsum(cnt[sel]) - cnt[sel], cnt[sel]
+                )
+                grid[rows, cols] = polys[np.repeat(first[sel], cnt[sel]) + cols]
+                res[sel] = shapely.union_all(grid, axis=1)
+        for t in np.flatnonzero(cnt > GROUP_UNION_MAX):
+            s0 = int(first[t])
+            sub = Ragged(scaled[off[s0] : off[s0 + cnt[t]]], off[s0 : s0 + cnt[t] + 1] - off[s0])
+            res[t] = _union_rounds(sub, int(ca[t] + cb[t]))
+        res = _result_many(res)
+    for k in np.unique(ks):
+        sel = np.flatnonzero(ks == k)
+        for t, g in zip(sel, _unscale_many(res[sel], int(k), [names[t] for t in sel]), strict=True):
+            out[batch[t][0]] = g
+
+
+def _starts(chunks: list) -> np.ndarray:
+    n = np.array([len(r.coords) for r in chunks], np.int64)
+    return np.cumsum(n) - n
+
+
+def _result_many(geoms: np.ndarray) -> np.ndarray:
+    """:func:`_result` of many union results (vectorized where they are polygons)."""
+    import shapely
+
+    t = shapely.get_type_id(geoms)
+    ok = (t == 3) | (t == 6)
+    out = np.empty(len(geoms), dtype=object)
+    if ok.any():
+        g = shapely.normalize(shapely.simplify(geoms[ok], 0.0))
+        out[ok] = shapely.orient_polygons(g)
+    for i in np.flatnonzero(~ok):
+        out[i] = _result(geoms[i])
+    return out
+
+
+def _unscale_many(geoms: np.ndarray, k: int, names: list) -> list:
+    """:func:`_unscale` of many results sharing the exponent ``k``."""
+    import shapely
+
+    if k == 0:
+        return list(geoms)
+    with np.errstate(over="ignore", under="ignore"):
+        out = shapely.transform(geoms, lambda c: np.ldexp(c, -k))
+    c = shapely.get_coordinates(out)
+    nz = np.abs(c[c != 0])
+    if nz.size and (not np.isfinite(nz).all() or nz.min() < 2.0**-1022):
+        return [_unscale(g, k, nm) for g, nm in zip(geoms, names, strict=True)]
+    return list(out)
 
 
 # --------------------------------------------------------------------------------------
