@@ -45,6 +45,7 @@ from .nesting import (
     no_fit_polygons,
     pair_blocks,
     read_esicup,
+    rotate_part,
 )
 from .trace import MergeTrace, merge_trace
 
@@ -85,6 +86,7 @@ __all__ = [
     "degenerate_placements",
     "read_esicup",
     "pair_blocks",
+    "rotate_part",
     "intersects",
     "distance",
     "penetration",

@@ -1177,14 +1177,61 @@ def _many_decomposition(batch: list, out: np.ndarray, na, nb, threads: int) -> N
                 grid[rows, cols] = polys[np.repeat(first[sel], cnt[sel]) + cols]
                 res[sel] = shapely.union_all(grid, axis=1)
         for t in np.flatnonzero(cnt > GROUP_UNION_MAX):
-            s0 = int(first[t])
-            sub = Ragged(scaled[off[s0] : off[s0 + cnt[t]]], off[s0 : s0 + cnt[t] + 1] - off[s0])
-            res[t] = _union_rounds(sub, int(ca[t] + cb[t]))
+            s0, c = int(first[t]), int(cnt[t])
+            _, pa, pb = batch[t]
+            res[t] = _union_culled(polys[s0 : s0 + c], pa, pb, int(ks[t]))
         res = _result_many(res)
     for k in np.unique(ks):
         sel = np.flatnonzero(ks == k)
         for t, g in zip(sel, _unscale_many(res[sel], int(k), [names[t] for t in sel]), strict=True):
             out[batch[t][0]] = g
+
+
+#: Directions whose extreme vertices give the translates ``A + q`` / ``B + p`` of the
+#: culling step (any vertex would do: every translate lies inside the sum).
+_CULL_DIRECTIONS = np.array(
+    [(1, 0), (2, 1), (1, 1), (1, 2), (0, 1), (-1, 2), (-1, 1), (-2, 1)]
+    + [(-1, 0), (-2, -1), (-1, -1), (-1, -2), (0, -1), (1, -2), (1, -1), (2, -1)],
+    dtype=np.float64,
+)
+
+
+def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> Any:
+    """Union of many piece sums of one pair (scaled by 2**k), dropping first every sum
+    that lies strictly inside ``U0``, the union of a few translates ``A + q`` (q an
+    extreme vertex of B) and ``B + p`` (p an extreme vertex of A). Each translate lies
+    in ``A ⊕ B``, so ``U0 ∪ (the sums left)`` is the same set; on curved parts U0 holds
+    most of the sums (4853 of 5041 on a gardeyn0 pair)."""
+    import shapely
+
+    if pa.flat or pb.flat:
+        return _union_rounds_polys(polys)
+    ga = _ldexp_geom(pa.op.geom, k - pa.k)
+    gb = _ldexp_geom(pb.op.geom, k - pb.k)
+    ca = shapely.get_coordinates(ga)
+    cb = shapely.get_coordinates(gb)
+    qa = ca[np.unique(np.argmax(ca @ _CULL_DIRECTIONS.T, axis=0))]
+    qb = cb[np.unique(np.argmax(cb @ _CULL_DIRECTIONS.T, axis=0))]
+    trans = [shapely.transform(ga, lambda c, q=q: c + q) for q in qb]
+    trans += [shapely.transform(gb, lambda c, p=p: c + p) for p in qa]
+    U0 = shapely.union_all(trans)
+    shapely.prepare(U0)
+    rest = polys[~shapely.contains_properly(U0, polys)]
+    if len(rest) > 4 * GROUP_UNION_MAX:
+        return shapely.union_all([U0, _union_rounds_polys(rest)])
+    return shapely.union_all(np.concatenate([[U0], rest]))
+
+
+def _union_rounds_polys(g: np.ndarray) -> Any:
+    """:func:`_union_rounds` of an array of convex shapely polygons."""
+    import shapely
+
+    coords, idx = shapely.get_coordinates(shapely.get_exterior_ring(g), return_index=True)
+    n = np.bincount(idx, minlength=len(g)) - 1  # without the closing vertex
+    keep = np.ones(len(coords), bool)
+    keep[np.cumsum(n + 1) - 1] = False
+    off = np.concatenate(([0], np.cumsum(n)))
+    return _union_rounds(Ragged(coords[keep], off), 2 * int(np.sqrt(len(g))) + 1)
 
 
 def _starts(chunks: list) -> np.ndarray:

@@ -43,6 +43,7 @@ __all__ = [
     "degenerate_placements",
     "read_esicup",
     "pair_blocks",
+    "rotate_part",
 ]
 
 
@@ -95,6 +96,32 @@ def _rotate(part: Any, angle: Any) -> Any:
     if q is not None:
         return _rot90_coords(arr, q)
     return _rot_float(arr.astype(np.float64), angle)
+
+
+def rotate_part(part: Any, angle: Any) -> Any:
+    """A part rotated counter-clockwise about the origin by ``angle`` degrees.
+
+    Parameters
+    ----------
+    part : (n, 2) array_like or shapely geometry
+    angle : number
+        Degrees. Multiples of 90 are exact: (x, y) → (−y, x) for 90, ints stay ints and
+        Fractions stay Fractions. Other angles round the coordinates to float64.
+
+    Returns
+    -------
+    ndarray or shapely geometry
+        The same kind as ``part`` (an array for array-likes).
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> mk.rotate_part([(0, 0), (2, 0), (2, 1)], 90).tolist()
+    [[0, 0], [0, 2], [-1, 2]]
+    """
+    if _quarter_turns(angle) == 0:
+        return part if type(part).__module__.startswith("shapely") else np.asarray(part)
+    return _rotate(part, angle)
 
 
 def _rot_float(c: np.ndarray, angle: Any) -> np.ndarray:
