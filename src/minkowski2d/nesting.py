@@ -370,8 +370,8 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
     computed exactly: the open interval of each convex sum on the edge's line comes from
     cross products that are exact integers in float64 for integer coordinates below
     2**24 (otherwise they are computed in Fractions), and interval ends are compared as
-    rationals. Whether a leftover piece lies on the boundary of the regularized sum (and
-    is therefore already in it) is decided by GEOS's predicates.
+    rationals. The parts of these pieces on the boundary of the regularized sum are already
+    in it and are removed (by GEOS, on the pieces' float64 coordinates).
 
     Examples
     --------
@@ -462,13 +462,16 @@ def _leftover(S: Any, nfp: Any) -> Any:
     bd = shapely.boundary(nfp)
     shapely.prepare(bd)
     pieces = pieces[~shapely.covers(bd, pieces)]
+    # a slit may run on along the boundary: keep only what lies off it
+    pieces = shapely.difference(pieces, bd)
+    pieces = pieces[~shapely.is_empty(pieces)]
     if len(pieces) == 0:
         return shapely.GeometryCollection()
     u = shapely.union_all(pieces)
     lines = [g for g in shapely.get_parts(u) if g.geom_type == "LineString"]
     points = [g for g in shapely.get_parts(u) if g.geom_type == "Point"]
     merged = shapely.line_merge(shapely.MultiLineString(lines)) if lines else None
-    out = list(shapely.get_parts(merged)) if merged is not None else []
+    out = list(shapely.get_parts(shapely.simplify(merged, 0.0))) if merged is not None else []
     out += points
     if len(out) == 1:
         return out[0]
