@@ -1187,21 +1187,37 @@ def _many_decomposition(batch: list, out: np.ndarray, na, nb, threads: int) -> N
             out[batch[t][0]] = g
 
 
+def _square_directions(r: int) -> np.ndarray:
+    """The 8 r integer points on the boundary of the square [-r, r]², in turn order."""
+    side = np.arange(-r, r)
+    pts = np.concatenate(
+        [
+            np.stack([np.full(2 * r, r), side], 1),
+            np.stack([-side, np.full(2 * r, r)], 1),
+            np.stack([np.full(2 * r, -r), -side], 1),
+            np.stack([side, np.full(2 * r, -r)], 1),
+        ]
+    )
+    return pts.astype(np.float64)
+
+
 #: Directions whose extreme vertices give the translates ``A + q`` / ``B + p`` of the
-#: culling step (any vertex would do: every translate lies inside the sum).
-_CULL_DIRECTIONS = np.array(
-    [(1, 0), (2, 1), (1, 1), (1, 2), (0, 1), (-1, 2), (-1, 1), (-2, 1)]
-    + [(-1, 0), (-2, -1), (-1, -1), (-1, -2), (0, -1), (1, -2), (1, -1), (2, -1)],
-    dtype=np.float64,
-)
+#: culling step (any vertex would do: every translate lies inside the sum; these only
+#: spread the translates around the parts). 64 directions: on gardeyn4's 301-piece parts
+#: 16 left up to 80 524 of 90 601 sums, 64 left 1 551.
+_CULL_DIRECTIONS = _square_directions(8)
 
 
 def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> Any:
-    """Union of many piece sums of one pair (scaled by 2**k), dropping first every sum
-    that lies strictly inside ``U0``, the union of a few translates ``A + q`` (q an
-    extreme vertex of B) and ``B + p`` (p an extreme vertex of A). Each translate lies
-    in ``A ⊕ B``, so ``U0 ∪ (the sums left)`` is the same set; on curved parts U0 holds
-    most of the sums (4853 of 5041 on a gardeyn0 pair)."""
+    """Union of many piece sums of one pair (scaled by 2**k).
+
+    First ``U0``: the union of the translates ``A + q`` (q an extreme vertex of B in one
+    of 64 directions) and ``B + p`` (likewise). Each translate lies in ``A ⊕ B``, so
+    ``U0 ∪ (the sums)`` is the same set, and every sum strictly inside ``U0`` is dropped
+    (most of them: 4 853 of 5 041 on a gardeyn0 pair). The rest are added in rounds,
+    those reaching farthest from the centre first (64, then 128, ...), each round
+    dropping the sums strictly inside the union so far.
+    """
     import shapely
 
     if pa.flat or pb.flat:
@@ -1214,12 +1230,27 @@ def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> An
     qb = cb[np.unique(np.argmax(cb @ _CULL_DIRECTIONS.T, axis=0))]
     trans = [shapely.transform(ga, lambda c, q=q: c + q) for q in qb]
     trans += [shapely.transform(gb, lambda c, p=p: c + p) for p in qa]
-    U0 = shapely.union_all(trans)
-    shapely.prepare(U0)
-    rest = polys[~shapely.contains_properly(U0, polys)]
-    if len(rest) > 4 * GROUP_UNION_MAX:
-        return shapely.union_all([U0, _union_rounds_polys(rest)])
-    return shapely.union_all(np.concatenate([[U0], rest]))
+    U = shapely.union_all(trans)
+    shapely.prepare(U)
+    g = polys[~shapely.contains_properly(U, polys)]
+    if len(g) == 0:
+        return U
+    coords, idx = shapely.get_coordinates(g, return_index=True)
+    ctr = (coords.min(axis=0) + coords.max(axis=0)) / 2
+    reach = np.zeros(len(g))
+    np.maximum.at(reach, idx, ((coords - ctr) ** 2).sum(axis=1))
+    step = GROUP_UNION_MAX
+    while len(g) > step:
+        top = np.argpartition(-reach, step - 1)[:step]
+        sel = np.zeros(len(g), bool)
+        sel[top] = True
+        U = shapely.union_all(np.concatenate([[U], g[sel]]))
+        g, reach = g[~sel], reach[~sel]
+        shapely.prepare(U)
+        keep = ~shapely.contains_properly(U, g)
+        g, reach = g[keep], reach[keep]
+        step *= 2
+    return shapely.union_all(np.concatenate([[U], g])) if len(g) else U
 
 
 def _union_rounds_polys(g: np.ndarray) -> Any:
