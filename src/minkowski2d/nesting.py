@@ -53,6 +53,8 @@ __all__ = [
 
 def _quarter_turns(angle: Any) -> int | None:
     """Number of quarter turns (0..3) when ``angle`` (degrees) is a multiple of 90."""
+    if type(angle) is int:  # the common case, without a Fraction
+        return None if angle % 90 else (angle // 90) % 4
     try:
         f = Fraction(angle)
     except (TypeError, ValueError) as exc:
@@ -251,7 +253,8 @@ def no_fit_polygons(
     oriented: dict[tuple, Any] = {}
 
     def part_at(i: int, angle: Any) -> Any:
-        key = (i, _quarter_turns(angle) if _quarter_turns(angle) is not None else angle)
+        q = _quarter_turns(angle)
+        key = (i, q if q is not None else angle)
         if key not in oriented:
             oriented[key] = _rotate(parts[i], angle)
         return oriented[key]
@@ -259,9 +262,10 @@ def no_fit_polygons(
     jobs: dict[tuple, int] = {}
     job_list: list[tuple] = []
     plan = []  # (key, job index, quarter turns to apply)
+    qt = {a: _quarter_turns(a) for r in rot for a in r}
     for key in keys:
         i, ri, j, rj = key
-        qi, qj = _quarter_turns(ri), _quarter_turns(rj)
+        qi, qj = qt[ri], qt[rj]
         if qi is not None and qj is not None:
             d = (qj - qi) % 4
             c1, c2 = (i, 0, j, d), (j, 0, i, (-d) % 4)
