@@ -1080,12 +1080,24 @@ def minkowski_sum_general_many(
             bar(len(batch))
         for q, _pa, _pb in fallback:
             m = "convolution" if method == "convolution" else None
-            with _boundary(f"{na(q)}, {nb(q)}", "computing the sum"):
-                out[q] = minkowski_sum_general(ga(q), gb(q), method=m)
+            out[q] = _single(ga(q), gb(q), na(q), nb(q), method=m)
             bar(1)
     finally:
         bar(None)
     return out
+
+
+def _single(a: Any, b: Any, name_a: str, name_b: str, method: str | None = None) -> Any:
+    """:func:`minkowski_sum_general` of one pair of a batch; errors name the batch
+    operands (``As[k]``, ``Bs[k]``) instead of ``a`` and ``b``."""
+    try:
+        return minkowski_sum_general(a, b, method=method)
+    except GeometryError as exc:
+        arg = exc.argument or ""
+        ren = {"a": name_a, "b": name_b, "a, b": f"{name_a}, {name_b}"}
+        if arg in ren:
+            raise exc.renamed(ren[arg]) from exc
+        raise
 
 
 def _progress_bar(progress: Any, total: int):
@@ -1144,8 +1156,7 @@ def _many_decomposition(batch: list, out: np.ndarray, na, nb, threads: int) -> N
     if code:
         # a range or overflow problem: the one-pair path computes it or raises
         for q, pa, pb in batch:
-            with _boundary(f"{na(q)}, {nb(q)}", "computing the sum"):
-                out[q] = minkowski_sum_general(pa.obj, pb.obj)
+            out[q] = _single(pa.obj, pb.obj, na(q), nb(q))
         return
     # each pair's common scale, as in minkowski_sum_general
     ks = np.array(

@@ -283,8 +283,9 @@ def no_fit_polygons(
             jk = ("f", i, ri, j, rj)
             if jk not in jobs:
                 jobs[jk] = len(job_list)
-                B = part_at(j, rj)
-                job_list.append((part_at(i, ri), _rotate(B, 180)))
+                if (j, "reflected", rj) not in oriented:
+                    oriented[(j, "reflected", rj)] = _rotate(part_at(j, rj), 180)
+                job_list.append((part_at(i, ri), oriented[(j, "reflected", rj)]))
             plan.append((key, jobs[jk], 0))
 
     As = [a for a, _ in job_list]
@@ -324,9 +325,9 @@ def _rename(exc: GeometryError, As: list, Bs: list, oriented: dict) -> GeometryE
             obj = L[k]
             name = where.get(id(obj))
             if name is None:  # a reflected copy: find the part it came from
-                for (i, _a), v in oriented.items():
+                for key, v in oriented.items():
                     if v is obj:
-                        name = f"parts[{i}]"
+                        name = f"parts[{key[0]}]"
                 name = name or arg
             return exc.renamed(name + arg[arg.index("]") + 1 :])
     return exc
