@@ -295,7 +295,7 @@ def test_general_many_large_parts_use_culled_union():
         r = np.where(np.arange(n) % 2 == 0, r0, r1) * (1 + 0.1 * rng.random(n))
         return np.round(np.stack([r * np.cos(t), r * np.sin(t)], 1))
 
-    a, b = star(40, 1000, 500), star(30, 700, 300)
+    a, b = star(60, 1000, 500), star(50, 700, 300)
     g = mk.minkowski_sum_general_many([a], b)[0]
     assert same_set(g, oracle(shapely.Polygon(a), shapely.Polygon(b)))
 

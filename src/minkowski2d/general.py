@@ -898,7 +898,7 @@ def _sum(A: _Operand, B: _Operand, method: str | None, decomposition: str) -> An
 #: ``minkowski_sum_general_many``: a pair whose piece sums number at most this many is
 #: unioned together with other pairs of similar size in one vectorized GEOS call
 #: (``shapely.union_all(..., axis=1)``); larger ones go through the union in rounds.
-GROUP_UNION_MAX = 64
+GROUP_UNION_MAX = 256
 #: Pairs are processed in chunks of at most this many piece sums (bounds the memory and
 #: paces the progress bar).
 CHUNK_SUMS = 1 << 16
@@ -1250,7 +1250,7 @@ def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> An
     ctr = (coords.min(axis=0) + coords.max(axis=0)) / 2
     reach = np.zeros(len(g))
     np.maximum.at(reach, idx, ((coords - ctr) ** 2).sum(axis=1))
-    step = GROUP_UNION_MAX
+    step = 64
     while len(g) > step:
         top = np.argpartition(-reach, step - 1)[:step]
         sel = np.zeros(len(g), bool)
