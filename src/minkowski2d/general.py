@@ -1217,13 +1217,16 @@ def _square_directions(r: int) -> np.ndarray:
 #: spread the translates around the parts). 64 directions: on gardeyn4's 301-piece parts
 #: 16 left up to 80 524 of 90 601 sums, 64 left 1 551.
 _CULL_DIRECTIONS = _square_directions(8)
+#: An operand with at most this many vertices translates the other by all of them.
+CULL_ALL_VERTICES = 32
 
 
 def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> Any:
     """Union of many piece sums of one pair (scaled by 2**k).
 
-    First ``U0``: the union of the translates ``A + q`` (q an extreme vertex of B in one
-    of 64 directions) and ``B + p`` (likewise). Each translate lies in ``A ⊕ B``, so
+    First ``U0``: the union of the translates ``A + q`` (q a vertex of B: every vertex
+    when B has at most ``CULL_ALL_VERTICES``, else the extreme ones in 64 directions)
+    and ``B + p`` (likewise). Each translate lies in ``A ⊕ B``, so
     ``U0 ∪ (the sums)`` is the same set, and every sum strictly inside ``U0`` is dropped
     (most of them: 4 853 of 5 041 on a gardeyn0 pair). The rest are added in rounds,
     those reaching farthest from the centre first (64, then 128, ...), each round
@@ -1237,8 +1240,18 @@ def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> An
     gb = _ldexp_geom(pb.op.geom, k - pb.k)
     ca = shapely.get_coordinates(ga)
     cb = shapely.get_coordinates(gb)
-    qa = ca[np.unique(np.argmax(ca @ _CULL_DIRECTIONS.T, axis=0))]
-    qb = cb[np.unique(np.argmax(cb @ _CULL_DIRECTIONS.T, axis=0))]
+    # a small operand translates the other by every vertex, a large one by its extremes
+    qa = (
+        ca
+        if len(ca) <= CULL_ALL_VERTICES
+        else ca[np.unique(np.argmax(ca @ _CULL_DIRECTIONS.T, axis=0))]
+    )
+    qb = (
+        cb
+        if len(cb) <= CULL_ALL_VERTICES
+        else cb[np.unique(np.argmax(cb @ _CULL_DIRECTIONS.T, axis=0))]
+    )
+    qa, qb = np.unique(qa, axis=0), np.unique(qb, axis=0)
     trans = [shapely.transform(ga, lambda c, q=q: c + q) for q in qb]
     trans += [shapely.transform(gb, lambda c, p=p: c + p) for p in qa]
     U = shapely.union_all(trans)
