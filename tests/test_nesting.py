@@ -129,6 +129,36 @@ def test_every_classic_nfp_against_cgal():
     assert total == 27724
 
 
+@needs_data
+def test_degenerate_placements_on_instances_are_feasible():
+    found = 0
+    for name in ("dighe2", "shapes0"):
+        d = instance(name)
+        nfps = mk.no_fit_polygons(d["parts"], rotations=d["rotations"], keep_degenerate=True)
+        for (i, ri, j, rj), g in nfps.items():
+            if g.geom_type != "GeometryCollection":
+                continue
+            A = mk.rotate_part(d["parts"][i], ri)
+            B = mk.rotate_part(d["parts"][j], rj)
+            poly = shapely.union_all([p for p in shapely.get_parts(g) if p.geom_type == "Polygon"])
+            assert poly.equals(
+                mk.no_fit_polygons(d["parts"], rotations=d["rotations"], pairs=[(i, j)])[
+                    (i, ri, j, rj)
+                ]
+            )
+            for p in shapely.get_parts(g):
+                if p.geom_type == "Polygon":
+                    continue
+                found += 1
+                for t in (0.25, 0.5, 0.75):
+                    m = p.interpolate(t, normalized=True)
+                    # m is rounded off the exact segment: allow that much overlap
+                    over = A.intersection(shapely.affinity.translate(B, m.x, m.y)).area
+                    assert over <= 1e-12 * A.area
+                    assert poly.covers(m) or poly.distance(m) < 1e-12 * A.length
+    assert found >= 3
+
+
 # --------------------------------------------------------------------------------------
 # API
 
@@ -189,9 +219,13 @@ def test_keep_degenerate_slide_and_exact_fit():
     pts = [p for p in shapely.get_parts(nfps[(0, 0, 1, 0)]) if p.geom_type == "Point"]
     assert [p.wkt for p in pts] == ["POINT (0 0)"]
     # turned by 90 degrees, it slides exactly through the slot's mouth: x = 6, y in [1, 3];
-    # above y = 2 it can leave to the left, so only y in [1, 2] is inside the NFP
+    # above y = 2 it can leave to the left, so that part is on the NFP's boundary (the
+    # segment is kept whole: every point of it is a placement)
     lines = [p for p in shapely.get_parts(nfps[(0, 0, 1, 90)]) if p.geom_type == "LineString"]
-    assert [ln.wkt for ln in lines] == ["LINESTRING (6 1, 6 2)"]
+    assert [ln.wkt for ln in lines] == ["LINESTRING (6 1, 6 3)"]
+    poly = shapely.get_parts(nfps[(0, 0, 1, 90)])[0]
+    assert poly.boundary.covers(shapely.LineString([(6, 2), (6, 3)]))
+    assert not poly.boundary.intersects(shapely.LineString([(6, 1.1), (6, 1.9)]))
     B90 = shapely.Polygon(mk.rotate_part(B, 90))
     for y in (1, 1.5, 2, 2.5, 3):
         assert shapely.Polygon(A).intersection(shapely.affinity.translate(B90, 6, y)).area == 0

@@ -375,8 +375,9 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
     computed exactly: the open interval of each convex sum on the edge's line comes from
     cross products that are exact integers in float64 for integer coordinates below
     2**24 (otherwise they are computed in Fractions), and interval ends are compared as
-    rationals. The parts of these pieces on the boundary of the regularized sum are already
-    in it and are removed (by GEOS, on the pieces' float64 coordinates).
+    rationals. Pieces lying wholly on the boundary of the regularized sum are already in
+    it and are dropped (by GEOS, on the pieces' float64 coordinates); a segment that
+    continues along that boundary is kept whole (every point of it is a valid placement).
 
     Examples
     --------
@@ -466,10 +467,9 @@ def _leftover(S: Any, nfp: Any) -> Any:
     pieces = np.array(pieces, dtype=object)
     bd = shapely.boundary(nfp)
     shapely.prepare(bd)
+    # drop what lies wholly on the boundary (already in the polygon); a slit that runs
+    # on along the boundary is kept whole (cutting it would round the cut point)
     pieces = pieces[~shapely.covers(bd, pieces)]
-    # a slit may run on along the boundary: keep only what lies off it
-    pieces = shapely.difference(pieces, bd)
-    pieces = pieces[~shapely.is_empty(pieces)]
     if len(pieces) == 0:
         return shapely.GeometryCollection()
     u = shapely.union_all(pieces)
