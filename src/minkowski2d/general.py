@@ -346,6 +346,11 @@ def _build(raw: _Raw, k: int) -> _Operand:
         ring = np.array([(float(x * two), float(y * two)) for x, y in raw.value])
     else:
         ring = np.ldexp(raw.value, k)
+    if _has_area(ring):
+        # not all on one line: a polygon (GEOS validates it); no hull needed
+        with _boundary(name, "building the polygon"):
+            poly = shapely.Polygon(ring)
+        return _Operand(_check_geom(poly, name), None, name)
     from .convex import convex_hull
 
     hull = np.asarray(convex_hull(ring), dtype=np.float64)
@@ -355,6 +360,21 @@ def _build(raw: _Raw, k: int) -> _Operand:
     with _boundary(name, "building the polygon"):
         poly = shapely.Polygon(ring)
     return _Operand(_check_geom(poly, name), None, name)
+
+
+def _has_area(ring: np.ndarray) -> bool:
+    """True when the finite points ``ring`` do not all lie on one line (exact signs)."""
+    from ._core import _ext
+
+    r = np.ascontiguousarray(ring, dtype=np.float64)
+    if r.ndim != 2 or len(r) < 3 or not np.isfinite(r).all():
+        return False
+    far = np.flatnonzero((r != r[0]).any(axis=1))
+    if len(far) == 0:
+        return False
+    p = np.broadcast_to(r[0], r.shape).copy()
+    q = np.broadcast_to(r[far[0]], r.shape).copy()
+    return bool(np.any(_ext.orient_f(p, q, r)))
 
 
 def _operands(*pairs: tuple[Any, str]) -> tuple[int, list[_Operand]]:
