@@ -313,24 +313,20 @@ def no_fit_polygons(
 
 
 def _rename(exc: GeometryError, As: list, Bs: list, oriented: dict) -> GeometryError:
-    """Name the part (``parts[i]``) instead of the batch operand (``As[k]``)."""
+    """Name the parts (``parts[i]``) instead of the batch operands (``As[k]``, ``Bs[k]``)."""
+    import re
+
     arg = exc.argument or ""
-    where = {id(v): f"parts[{k[0]}]" for k, v in oriented.items()}
-    for label, L in (("As", As), ("Bs", Bs)):
-        if arg.startswith(label + "["):
-            try:
-                k = int(arg[len(label) + 1 : arg.index("]")])
-            except ValueError:
-                return exc
-            obj = L[k]
-            name = where.get(id(obj))
-            if name is None:  # a reflected copy: find the part it came from
-                for key, v in oriented.items():
-                    if v is obj:
-                        name = f"parts[{key[0]}]"
-                name = name or arg
-            return exc.renamed(name + arg[arg.index("]") + 1 :])
-    return exc
+    where = {id(v): f"parts[{key[0]}]" for key, v in oriented.items()}
+    lists = {"As": As, "Bs": Bs}
+
+    def sub(m: re.Match) -> str:
+        k = int(m.group(2))
+        L = lists[m.group(1)]
+        return where.get(id(L[k]), m.group(0)) if k < len(L) else m.group(0)
+
+    new = re.sub(r"\b(As|Bs)\[(\d+)\]", sub, arg)
+    return exc if new == arg else exc.renamed(new)
 
 
 # --------------------------------------------------------------------------------------
