@@ -251,7 +251,7 @@ def test_degenerate_placements_are_feasible_and_nothing_else():
 
 @needs_data
 def test_inner_fit_polygons_in_the_strip_are_exact():
-    for name in ("albano", "fu", "jakobs1", "swim"):
+    for name in CLASSIC:
         d = instance(name)
         H = d["strip"]["height"]
         W = d["strip"]["length"] or 1000
