@@ -321,7 +321,7 @@ def test_general_many_errors_and_progress():
     assert seen[-1] == (5, 5)
 
 
-def test_general_many_large_parts_use_culled_union():
+def test_general_many_large_parts():
     rng = np.random.default_rng(3)
 
     def star(n, r0, r1):
@@ -330,8 +330,25 @@ def test_general_many_large_parts_use_culled_union():
         return np.round(np.stack([r * np.cos(t), r * np.sin(t)], 1))
 
     a, b = star(60, 1000, 500), star(50, 700, 300)
-    g = mk.minkowski_sum_general_many([a], b)[0]
-    assert same_set(g, oracle(shapely.Polygon(a), shapely.Polygon(b)))
+    ref = oracle(shapely.Polygon(a), shapely.Polygon(b))
+    for method in ("auto", "decomposition"):  # 1015 piece sums: the union in rounds
+        g = mk.minkowski_sum_general_many([a], b, method=method)[0]
+        assert same_set(g, ref)
+
+
+@needs_data
+def test_auto_switches_to_the_convolution_on_curved_parts(monkeypatch):
+    import minkowski2d.general as general
+
+    d = instance("gardeyn0")
+    A, B = d["parts"][3], mk.rotate_part(d["parts"][3], 180)  # 2 304 sums, 170 crossings
+    calls = []
+    orig = general._sum_convolution
+    monkeypatch.setattr(general, "_sum_convolution", lambda *a: calls.append(1) or orig(*a))
+    g = mk.minkowski_sum_general_many([A], B)[0]
+    assert calls == [1]
+    ref = mk.minkowski_sum_general(A, B, method="decomposition")
+    assert same_set(g, ref)
 
 
 # --------------------------------------------------------------------------------------

@@ -990,9 +990,11 @@ def minkowski_sum_general_many(
         collection of operands (one sum per item), unlike in
         :func:`minkowski_sum_general`, where a list of polygons is one operand.
     method : {"auto", "decomposition", "convolution"}
-        ``"auto"``: the decomposition for every pair whose pieces product is at most
-        ``MAX_PIECE_PAIRS``, the convolution for the others (the cost estimate is the
-        number of convex piece sums). The other values force one method for every pair.
+        ``"auto"``: per pair, the decomposition, or the convolution when the pair has
+        more than ``AUTO_MIN_SUMS`` piece sums and a cost model (piece sums against
+        convolution segments and their crossings, see ``AUTO_COST_SUM``) estimates it
+        at most half as costly, or when the pieces product exceeds ``MAX_PIECE_PAIRS``.
+        The other values force one method for every pair.
     progress : bool or callable, optional
         ``True`` shows a tqdm bar (when tqdm is installed) over the pairs; a callable is
         called as ``progress(done, total)`` after each chunk of pairs.
@@ -1003,7 +1005,8 @@ def minkowski_sum_general_many(
     -------
     numpy.ndarray of object
         ``result[k]`` is ``minkowski_sum_general(As[k], Bs[k])`` (a Polygon or
-        MultiPolygon, the same set, normalized the same way).
+        MultiPolygon, the same set, normalized the same way; where ``"auto"`` picks
+        the convolution, crossing points may differ in the last bit).
 
     Raises
     ------
@@ -1020,7 +1023,8 @@ def minkowski_sum_general_many(
     (exact for integers up to 2**52). Each pair's sums are then scaled by the pair's
     power of two (as :func:`minkowski_sum_general` does) and unioned by GEOS: pairs of
     similar size together in one vectorized ``union_all``, pairs with more than
-    ``GROUP_UNION_MAX`` sums in rounds that drop sums already covered.
+    ``GROUP_UNION_MAX`` sums in rounds that drop sums already covered (as
+    :func:`minkowski_sum_general` does).
 
     Examples
     --------
@@ -1089,6 +1093,12 @@ def minkowski_sum_general_many(
                     _sum_decomposition(pa.op, pb.op, "hertel-mehlhorn", switch=False)
                 fallback.append(item)
                 continue
+            if method == "auto" and npairs > AUTO_MIN_SUMS and not (pa.flat or pb.flat):
+                conv = _convolution_if_cheaper(pa, pb, npairs, f"{na(q)}, {nb(q)}")
+                if conv is not None:
+                    out[q] = conv
+                    bar(1)
+                    continue
             batch.append(item)
             sums_in_batch += npairs
             if sums_in_batch >= CHUNK_SUMS:
@@ -1105,6 +1115,52 @@ def minkowski_sum_general_many(
     finally:
         bar(None)
     return out
+
+
+#: ``method="auto"`` of :func:`minkowski_sum_general_many`: a pair with more than this
+#: many piece sums is checked for the convolution being cheaper. The cost model (speed
+#: only, both methods give the same set) counts, for the decomposition,
+#: ``AUTO_COST_SUM`` seconds per piece sum, and for the convolution ``AUTO_COST_FIXED``
+#: plus ``AUTO_COST_SEGMENT`` per reduced-convolution segment and per pair of segments
+#: that meet (counted with an STRtree, stopping as soon as the convolution cannot win).
+#: Calibrated on gardeyn0/1/3 samples and stars (a per-sum cost of 25 µs chose the
+#: convolution too rarely: gardeyn0 1.3 s, 100 µs: 0.56 s): curved parts have many
+#: convex pieces (a concave arc needs one per edge) but few crossings (an 81-vertex
+#: gardeyn0 part with itself: 2 304 sums, 168 segments, 170 crossings, 88 ms against
+#: 21 ms); stars have many crossings (32-stars: 1 089 sums, 27 808 crossings, 39 ms
+#: against 2.7 s), and they stay with the decomposition.
+AUTO_MIN_SUMS = 256
+AUTO_COST_SUM = 1e-4
+AUTO_COST_FIXED = 5e-3
+AUTO_COST_SEGMENT = 5e-5
+#: The convolution is taken when estimated at most this fraction of the decomposition.
+AUTO_MARGIN = 1.0
+
+
+def _convolution_if_cheaper(pa: _Prepared, pb: _Prepared, npairs: int, name: str) -> Any:
+    """The sum by the convolution when the cost model prefers it, else None."""
+    budget = AUTO_MARGIN * AUTO_COST_SUM * npairs - AUTO_COST_FIXED
+    if budget <= 0:
+        return None
+    k = SCALE_EXPONENT - max(pa.e, pb.e)
+    A = _Operand(_ldexp_geom(pa.op.geom, k - pa.k), None, pa.op.name)
+    B = _Operand(_ldexp_geom(pb.op.geom, k - pb.k), None, pb.op.name)
+    with _boundary(name, "estimating the cost of the convolution"):
+        ra, rb = _rings(A), _rings(B)
+        if 2 * sum(len(p) * len(q) for p in ra for q in rb) > MAX_CONVOLUTION_TESTS:
+            return None
+        segs = np.concatenate(
+            [_rc_segments(p, q) for p in ra for q in rb]
+            + [_rc_segments(q, p) for p in ra for q in rb]
+        )
+        segs = segs[(segs[:, 1] != segs[:, 0]).any(axis=1)]
+        room = int(budget / AUTO_COST_SEGMENT) - len(segs)
+        if room <= 0:
+            return None
+        if _count_crossings(segs, room) > room:
+            return None
+        r = _result(_sum_convolution(A, B))
+    return _unscale(r, k, name)
 
 
 def _single(a: Any, b: Any, name_a: str, name_b: str, method: str | None = None) -> Any:
@@ -1209,92 +1265,12 @@ def _many_decomposition(batch: list, out: np.ndarray, na, nb, threads: int) -> N
                 res[sel] = shapely.union_all(grid, axis=1)
         for t in np.flatnonzero(cnt > GROUP_UNION_MAX):
             s0, c = int(first[t]), int(cnt[t])
-            _, pa, pb = batch[t]
-            res[t] = _union_culled(polys[s0 : s0 + c], pa, pb, int(ks[t]))
+            res[t] = _union_rounds_polys(polys[s0 : s0 + c])
         res = _result_many(res)
     for k in np.unique(ks):
         sel = np.flatnonzero(ks == k)
         for t, g in zip(sel, _unscale_many(res[sel], int(k), [names[t] for t in sel]), strict=True):
             out[batch[t][0]] = g
-
-
-def _square_directions(r: int) -> np.ndarray:
-    """The 8 r integer points on the boundary of the square [-r, r]², in turn order."""
-    side = np.arange(-r, r)
-    pts = np.concatenate(
-        [
-            np.stack([np.full(2 * r, r), side], 1),
-            np.stack([-side, np.full(2 * r, r)], 1),
-            np.stack([np.full(2 * r, -r), -side], 1),
-            np.stack([side, np.full(2 * r, -r)], 1),
-        ]
-    )
-    return pts.astype(np.float64)
-
-
-#: Directions whose extreme vertices give the translates ``A + q`` / ``B + p`` of the
-#: culling step (any vertex would do: every translate lies inside the sum; these only
-#: spread the translates around the parts). 64 directions: on gardeyn4's 301-piece parts
-#: 16 left up to 80 524 of 90 601 sums, 64 left 1 551.
-_CULL_DIRECTIONS = _square_directions(8)
-#: An operand with at most this many vertices translates the other by all of them.
-CULL_ALL_VERTICES = 32
-
-
-def _union_culled(polys: np.ndarray, pa: _Prepared, pb: _Prepared, k: int) -> Any:
-    """Union of many piece sums of one pair (scaled by 2**k).
-
-    First ``U0``: the union of the translates ``A + q`` (q a vertex of B: every vertex
-    when B has at most ``CULL_ALL_VERTICES``, else the extreme ones in 64 directions)
-    and ``B + p`` (likewise). Each translate lies in ``A ⊕ B``, so
-    ``U0 ∪ (the sums)`` is the same set, and every sum strictly inside ``U0`` is dropped
-    (most of them: 4 853 of 5 041 on a gardeyn0 pair). The rest are added in rounds,
-    those reaching farthest from the centre first (64, then 128, ...), each round
-    dropping the sums strictly inside the union so far.
-    """
-    import shapely
-
-    if pa.flat or pb.flat:
-        return _union_rounds_polys(polys)
-    ga = _ldexp_geom(pa.op.geom, k - pa.k)
-    gb = _ldexp_geom(pb.op.geom, k - pb.k)
-    ca = shapely.get_coordinates(ga)
-    cb = shapely.get_coordinates(gb)
-    # a small operand translates the other by every vertex, a large one by its extremes
-    qa = (
-        ca
-        if len(ca) <= CULL_ALL_VERTICES
-        else ca[np.unique(np.argmax(ca @ _CULL_DIRECTIONS.T, axis=0))]
-    )
-    qb = (
-        cb
-        if len(cb) <= CULL_ALL_VERTICES
-        else cb[np.unique(np.argmax(cb @ _CULL_DIRECTIONS.T, axis=0))]
-    )
-    qa, qb = np.unique(qa, axis=0), np.unique(qb, axis=0)
-    trans = [shapely.transform(ga, lambda c, q=q: c + q) for q in qb]
-    trans += [shapely.transform(gb, lambda c, p=p: c + p) for p in qa]
-    U = shapely.union_all(trans)
-    shapely.prepare(U)
-    g = polys[~shapely.contains_properly(U, polys)]
-    if len(g) == 0:
-        return U
-    coords, idx = shapely.get_coordinates(g, return_index=True)
-    ctr = (coords.min(axis=0) + coords.max(axis=0)) / 2
-    reach = np.zeros(len(g))
-    np.maximum.at(reach, idx, ((coords - ctr) ** 2).sum(axis=1))
-    step = 64
-    while len(g) > step:
-        top = np.argpartition(-reach, step - 1)[:step]
-        sel = np.zeros(len(g), bool)
-        sel[top] = True
-        U = shapely.union_all(np.concatenate([[U], g[sel]]))
-        g, reach = g[~sel], reach[~sel]
-        shapely.prepare(U)
-        keep = ~shapely.contains_properly(U, g)
-        g, reach = g[keep], reach[keep]
-        step *= 2
-    return shapely.union_all(np.concatenate([[U], g])) if len(g) else U
 
 
 def _union_rounds_polys(g: np.ndarray) -> Any:
