@@ -34,7 +34,20 @@ from .convex import (
     translate,
 )
 from .errors import GeometryError
-from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
+from .general import (
+    convex_decomposition,
+    minkowski_difference,
+    minkowski_sum_general,
+    minkowski_sum_general_many,
+)
+from .nesting import (
+    degenerate_placements,
+    inner_fit_polygon,
+    no_fit_polygons,
+    pair_blocks,
+    read_esicup,
+    rotate_part,
+)
 from .offset import OffsetArcs, offset, offset_arcs
 from .trace import MergeTrace, merge_trace
 
@@ -73,6 +86,13 @@ __all__ = [
     "minkowski_sum_general",
     "convex_decomposition",
     "minkowski_difference",
+    "minkowski_sum_general_many",
+    "no_fit_polygons",
+    "inner_fit_polygon",
+    "degenerate_placements",
+    "read_esicup",
+    "pair_blocks",
+    "rotate_part",
     "intersects",
     "distance",
     "penetration",

