@@ -38,6 +38,7 @@ Neither operand needs to contain the origin.
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -1039,6 +1040,12 @@ def minkowski_sum_general_many(
         raise ValueError(f"method must be one of {('auto',) + SUM_METHODS}, got {method!r}")
     if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
         raise ValueError(f"threads must be a positive int, got {threads!r}")
+    from ._containers import apply, boxed
+
+    if boxed(As) or boxed(Bs):
+        # GeoSeries / GeometryArray / object arrays: the same container kind out
+        run = partial(minkowski_sum_general_many, method=method, threads=threads)
+        return apply(run, As, Bs, progress=progress, convex=False)
     la, many_a = _many_operands(As)
     lb, many_b = _many_operands(Bs)
     if not many_a and not many_b:

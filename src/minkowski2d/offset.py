@@ -699,10 +699,26 @@ def _offset_one(
     return out
 
 
+def _list_result(res: list) -> np.ndarray:
+    out = np.empty(len(res), dtype=object)
+    out[:] = res
+    return out
+
+
 def _map(fn: Any, polygon: Any) -> Any:
     """Apply ``fn`` to one polygon, or to each polygon of a container (same kind out)."""
     if not _is_many(polygon):
         return fn(polygon)
+    from ._containers import apply, boxed
+
+    if boxed(polygon):
+        # GeoSeries / GeometryArray / object arrays: the shared container rules
+        return apply(
+            lambda ps: _list_result([None if g is None else fn(g) for g in ps]),
+            polygon,
+            convex=False,
+            names=("polygon",),
+        )
     tname = type(polygon).__name__
     items = list(polygon)
     res = [None if g is None else fn(g) for g in items]
