@@ -167,3 +167,28 @@ def test_a_general_function_adopts_apply_in_one_call():
     assert out[3].area == 4 * holed.area and out[4] is None and out[5].geom_type == "MultiPolygon"
     one = apply(lambda As: [a.buffer(1) for a in As], gs, convex=False, names=("polygons",))
     assert one[4] is None and one[3].area > holed.area
+
+
+# -- the general batch and offset adopt the same rules --------------------------------------
+def test_general_many_and_offset_keep_geoseries_index_and_crs():
+    gpd = pytest.importorskip("geopandas", reason="the geo extra (geopandas) is not installed")
+    s = gpd.GeoSeries(
+        [shapely.box(0, 0, 2, 1), None, shapely.box(5, 5, 6, 6)], index=[10, 20, 30], crs=3857
+    )
+    L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    r = mk.minkowski_sum_general_many(s, L)
+    assert isinstance(r, gpd.GeoSeries)
+    assert r.index.tolist() == [10, 20, 30] and r.crs == s.crs
+    assert r.iloc[1] is None
+    assert r.iloc[0].equals(mk.minkowski_sum_general(shapely.box(0, 0, 2, 1), L))
+    o = mk.offset(s, 0.5, tolerance=1e-3)
+    assert isinstance(o, gpd.GeoSeries) and o.index.tolist() == [10, 20, 30]
+    assert o.crs == s.crs and o.iloc[1] is None
+    assert o.iloc[2].equals(mk.offset(shapely.box(5, 5, 6, 6), 0.5, tolerance=1e-3))
+
+
+def test_general_many_object_array_in_object_array_out():
+    a = np.array([shapely.box(0, 0, 1, 1), None], dtype=object)
+    r = mk.minkowski_sum_general_many(a, [(0, 0), (1, 0), (0, 1)])
+    assert isinstance(r, np.ndarray) and r.dtype == object and r.shape == (2,)
+    assert r[1] is None and r[0].area == pytest.approx(3.5)
