@@ -96,6 +96,8 @@ def test_entry_point_subprocess(files):
     _, a, b, _, _ = files
     r = subprocess.run(
         [sys.executable, "-m", "minkowski2d", "collide", str(a), str(b)],
-        capture_output=True, text=True, check=True,
+        capture_output=True,
+        text=True,
+        check=True,
     )
     assert json.loads(r.stdout)["intersects"] is True

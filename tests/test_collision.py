@@ -28,9 +28,7 @@ from minkowski2d.errors import (
 from . import oracle
 from .strategies import convex_float, convex_int
 
-SETTINGS = settings(
-    max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow]
-)
+SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 REL = 1e-12
 
 # --------------------------------------------------------------------------------------
@@ -364,8 +362,13 @@ def test_gjk_cases_reported_against_other_libraries():
     ):
         check_pair(a, b)
     hull = [
-        (46.0659, 38.6251), (44.2764, 42.3867), (50.0397, 38.4649), (47.1963, 40.4563),
-        (48.0266, 38.5593), (45.1735, 40.495), (48.0415, 40.4456),
+        (46.0659, 38.6251),
+        (44.2764, 42.3867),
+        (50.0397, 38.4649),
+        (47.1963, 40.4563),
+        (48.0266, 38.5593),
+        (45.1735, 40.495),
+        (48.0415, 40.4456),
     ]
     for p in ([(44.2919, 39.7508)], [(46.0659, 38.6251)], [(47.0, 40.0)]):
         assert mk.intersects(p, hull, hull=True, method="gjk") == mk.intersects(
@@ -470,8 +473,10 @@ def test_batch_exact_fallback_and_shapely():
     big = 1 << 60
     As = Ragged.from_list([np.array([(big, 0), (big + 2, 0), (big, 2)], dtype=np.int64)] * 2)
     Bs = Ragged.from_list(
-        [np.array([(big + 1, 1), (big + 3, 1), (big + 3, 3)], dtype=np.int64),
-         np.array([(big + 3, 0), (big + 4, 0), (big + 4, 1)], dtype=np.int64)]
+        [
+            np.array([(big + 1, 1), (big + 3, 1), (big + 3, 3)], dtype=np.int64),
+            np.array([(big + 3, 0), (big + 4, 0), (big + 4, 1)], dtype=np.int64),
+        ]
     )
     assert mk.intersects_many(As, Bs).tolist() == [True, False]
     assert mk.distance_many(As, Bs).distance.tolist() == [0.0, 1.0]
