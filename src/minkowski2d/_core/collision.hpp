@@ -337,27 +337,41 @@ inline int on_degenerate(const Poly& A, const Poly& B, Scratch& S) {
 }
 
 // The merge decision of the walk at A edge i, -B edge t over gathered coordinates: the
-// float filter when it certifies, the exact predicate otherwise.
+// float filter when it certifies (a select, no data-dependent branch), the exact
+// predicate otherwise (rare).
 inline bool walk_take_a(const Scratch& S, i64 i, i64 t, i64 sa, i64 sbm, i64 ea, i64 eb) {
-  double ax0 = S.AX[i], ay0 = S.AY[i], ax1 = S.AX[i + 1], ay1 = S.AY[i + 1];
-  double bx0 = S.BX[t], by0 = S.BY[t], bx1 = S.BX[t + 1], by1 = S.BY[t + 1];
+  const double* AX = S.AX.data();
+  const double* AY = S.AY.data();
+  const double* BX = S.BX.data();
+  const double* BY = S.BY.data();
+  double ax0 = AX[i], ay0 = AY[i], ax1 = AX[i + 1], ay1 = AY[i + 1];
+  double bx0 = BX[t], by0 = BY[t], bx1 = BX[t + 1], by1 = BY[t + 1];
   // c = cross(a1 - a0, b0 - b1): > 0 when -B's edge is CCW of A's (A first)
   double lft = (ax1 - ax0) * (by0 - by1);
   double rgt = (ay1 - ay0) * (bx0 - bx1);
+  double det = lft - rgt;
+  double bnd = ERRBOUND * (std::fabs(lft) + std::fabs(rgt));
   bool ha = i >= sa, hb = t >= sbm, same = ha == hb;
-  bool ta;
-  if (!same) {
-    ta = !ha;
-  } else {
-    int f = filtered(lft, rgt);
-    if (f != 2)
-      ta = f > 0;
-    else if (i < ea && t < eb)
-      ta = cross_sign(ax0, ay0, ax1, ay1, bx1, by1, bx0, by0) >= 0;
-    else
-      ta = false;  // overridden below
-  }
-  return (ta || t >= eb) && i < ea;
+  bool certain = (bnd >= MINBOUND) & (std::fabs(det) > bnd);  // false for NaN
+  bool ta = same ? det > 0.0 : !ha;
+  if (__builtin_expect(same & !certain & (i < ea) & (t < eb), 0))
+    ta = cross_sign(ax0, ay0, ax1, ay1, bx1, by1, bx0, by0) >= 0;
+  return (ta | (t >= eb)) & (i < ea);
+}
+
+// The sub-edge chosen by the merge: p0 -> p1 of X and the vertex q of Y, selected by
+// index and pointer (no data-dependent branch).
+struct Sub {
+  double p0x, p0y, p1x, p1y, qx, qy;
+};
+
+inline Sub pick(const Scratch& S, bool ta, i64 i, i64 t) {
+  const double* PX = ta ? S.AX.data() : S.BX.data();
+  const double* PY = ta ? S.AY.data() : S.BY.data();
+  const double* QX = ta ? S.BX.data() : S.AX.data();
+  const double* QY = ta ? S.BY.data() : S.AY.data();
+  i64 u = ta ? i : t, w = ta ? t : i;
+  return Sub{PX[u], PY[u], PX[u + 1], PY[u + 1], QX[w], QY[w]};
 }
 
 // 1 when the origin lies in D = A + (-B) (closed), else 0. Exact; stops at the first
@@ -375,11 +389,12 @@ inline int intersects(const Poly& A, const Poly& B, Scratch& S) {
   bool zero = true;
   for (i64 s = 0; s < ea + eb; ++s) {
     bool ta = walk_take_a(S, i, t, sa, sbm, ea, eb);
-    double p0x = ta ? S.AX[i] : S.BX[t], p0y = ta ? S.AY[i] : S.BY[t];
-    double p1x = ta ? S.AX[i + 1] : S.BX[t + 1], p1y = ta ? S.AY[i + 1] : S.BY[t + 1];
-    double qx = ta ? S.BX[t] : S.AX[i], qy = ta ? S.BY[t] : S.AY[i];
-    int o = filtered((p1x - p0x) * (qy - p0y), (p1y - p0y) * (qx - p0x));
-    if (o == 2) o = cross_sign(p0x, p0y, p1x, p1y, p0x, p0y, qx, qy);
+    Sub e = pick(S, ta, i, t);
+    double lft = (e.p1x - e.p0x) * (e.qy - e.p0y), rgt = (e.p1y - e.p0y) * (e.qx - e.p0x);
+    double c = lft - rgt, bnd = ERRBOUND * (std::fabs(lft) + std::fabs(rgt));
+    int o = (c > 0.0) - (c < 0.0);
+    if (__builtin_expect(!((bnd >= MINBOUND) & (std::fabs(c) > bnd)), 0))
+      o = cross_sign(e.p0x, e.p0y, e.p1x, e.p1y, e.p0x, e.p0y, e.qx, e.qy);
     if (o < 0) return 0;
     zero &= o == 0;
     i += ta ? 1 : 0;
@@ -400,13 +415,11 @@ inline i64 walk(const Poly& A, const Poly& B, Scratch& S) {
   i64 i = 0, t = 0;
   for (i64 k = 0; k < ea + eb; ++k) {
     bool ta = walk_take_a(S, i, t, sa, sbm, ea, eb);
-    double p0x = ta ? S.AX[i] : S.BX[t], p0y = ta ? S.AY[i] : S.BY[t];
-    double p1x = ta ? S.AX[i + 1] : S.BX[t + 1], p1y = ta ? S.AY[i + 1] : S.BY[t + 1];
-    double qx = ta ? S.BX[t] : S.AX[i], qy = ta ? S.BY[t] : S.AY[i];
-    double ex = p1x - p0x, ey = p1y - p0y, fx = qx - p0x, fy = qy - p0y;
+    Sub e = pick(S, ta, i, t);
+    double ex = e.p1x - e.p0x, ey = e.p1y - e.p0y, fx = e.qx - e.p0x, fy = e.qy - e.p0y;
     double lft = ex * fy, rgt = ey * fx, c = lft - rgt;
-    if (ERRBOUND * (std::fabs(lft) + std::fabs(rgt)) > REL * std::fabs(c))
-      c = cross_value(p0x, p0y, p1x, p1y, p0x, p0y, qx, qy);
+    if (__builtin_expect(ERRBOUND * (std::fabs(lft) + std::fabs(rgt)) > REL * std::fabs(c), 0))
+      c = cross_value(e.p0x, e.p0y, e.p1x, e.p1y, e.p0x, e.p0y, e.qx, e.qy);
     S.cv[k] = c;
     S.kind[k] = ta ? 0 : 1;
     S.ii[k] = i < na ? i : 0;
