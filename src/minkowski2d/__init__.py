@@ -34,6 +34,7 @@ from .convex import (
 )
 from .errors import GeometryError
 from .general import convex_decomposition, minkowski_difference, minkowski_sum_general
+from .planning import MotionPlanner, Path
 from .trace import MergeTrace, merge_trace
 
 __version__ = "0.1.0"
@@ -76,5 +77,7 @@ __all__ = [
     "penetration_many",
     "Distance",
     "Penetration",
+    "MotionPlanner",
+    "Path",
     "__version__",
 ]
