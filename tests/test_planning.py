@@ -14,6 +14,7 @@ from __future__ import annotations
 import functools
 import heapq
 import math
+import os
 from fractions import Fraction
 
 import numpy as np
@@ -25,6 +26,9 @@ import minkowski2d as mk
 from minkowski2d.errors import GeometryError, NoPathError, ShapeError
 
 from . import oracle as O
+
+#: scale the example counts for a long local run (PLAN_EXAMPLES_SCALE=20)
+_X = int(os.environ.get("PLAN_EXAMPLES_SCALE", "1"))
 
 # --------------------------------------------------------------------------------------
 # the exact reference
@@ -389,7 +393,9 @@ coord = st.integers(0, 8)
 
 @st.composite
 def convex_int(draw, lo=0, hi=8, max_n=5):
-    pts = draw(st.lists(st.tuples(st.integers(lo, hi), st.integers(lo, hi)), min_size=3, max_size=max_n))
+    pts = draw(
+        st.lists(st.tuples(st.integers(lo, hi), st.integers(lo, hi)), min_size=3, max_size=max_n)
+    )
     h = O.hull(pts)
     if len(h) < 3:
         x, y = pts[0]
@@ -402,7 +408,7 @@ robots = st.sampled_from(
 )
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     obs=st.lists(convex_int(), min_size=1, max_size=4),
     robot=robots,
@@ -424,7 +430,7 @@ def test_random_int_scenes_against_oracle(obs, robot, box, s, g):
     check_against(pl, orc, s, g)
 
 
-@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=15 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     obs=st.lists(convex_int(), min_size=1, max_size=3),
     s=st.tuples(st.integers(-2, 10), st.integers(-2, 10)),
@@ -452,7 +458,7 @@ def l_shapes(draw):
     return [(xx + x, yy + y) for xx, yy in L]
 
 
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=25 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(
     obs=st.lists(st.one_of(l_shapes(), convex_int()), min_size=1, max_size=3),
     s=st.tuples(st.integers(-3, 10), st.integers(-3, 10)),
@@ -462,3 +468,131 @@ def test_non_convex_point_robot_against_oracle(obs, s, g):
     pl = mk.MotionPlanner(obs)
     orc = oracle_of(pl)
     check_against(pl, orc, s, g)
+
+
+@settings(max_examples=60 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    obs=st.lists(st.one_of(l_shapes(), convex_int()), min_size=1, max_size=3),
+    robot=robots,
+    segs=st.lists(
+        st.tuples(
+            st.integers(-3, 10), st.integers(-3, 10), st.integers(-3, 10), st.integers(-3, 10)
+        ),
+        min_size=1,
+        max_size=12,
+    ),
+)
+def test_visibility_and_location_predicates_against_oracle(obs, robot, segs):
+    pl = mk.MotionPlanner(obs, robot=robot)
+    orc = oracle_of(pl)
+    # segments between grid points and between C-obstacle vertices: many run along edges
+    # and seams, through vertices and pinch points
+    verts = pl.pieces.coords.tolist()
+    for k, (a, b, c, d) in enumerate(segs):
+        p, q = (a, b), (c, d)
+        if verts:
+            q2 = tuple(verts[(a * 31 + b * 7 + k) % len(verts)])
+            p2 = tuple(verts[(c * 13 + d * 5 + k) % len(verts)])
+        else:
+            p2, q2 = p, q
+        for u, v in ((p, q), (p, q2), (p2, q2)):
+            got = pl._core.segment_free(*u, *v)
+            assert got == (not orc.blocked(u, v)), (u, v)
+        for x in (p, q2, ((a + c) / 2, (b + d) / 2)):
+            want = orc.interior_group(x)
+            loc = int(pl.locate([x])[0])
+            assert loc == (-1 if want is None else want), x
+
+
+# --------------------------------------------------------------------------------------
+# CLI
+
+
+@pytest.fixture
+def scene_file(tmp_path):
+    import json
+
+    f = tmp_path / "scene.json"
+    f.write_text(
+        json.dumps(
+            {
+                "robot": ROBOT,
+                "obstacles": [
+                    sq(2, -1, 4, 3),
+                    {"type": "Polygon", "coordinates": [sq(8, 8, 9, 9)]},
+                ],
+                "workspace": [-10, -10, 10, 10],
+            }
+        )
+    )
+    return str(f)
+
+
+def test_cli_plan_json_geojson_svg(scene_file, capsys, tmp_path):
+    import json
+
+    from minkowski2d.cli import main
+
+    assert main(["plan", scene_file, "--start", "0,0", "--goal", "6,0"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["path"] == [[0.0, 0.0], [1.0, -2.0], [5.0, -2.0], [6.0, 0.0]]
+    assert math.isclose(out["length"], 4 + 2 * math.sqrt(5))
+    assert main(["plan", scene_file, "--start=-1,0", "--goal", "6,0", "--format", "geojson"]) == 0
+    fc = json.loads(capsys.readouterr().out)
+    roles = [f["properties"]["role"] for f in fc["features"]]
+    assert roles.count("obstacle") == 2 and roles.count("c-obstacle") == 2 and "path" in roles
+    svg = tmp_path / "plan.svg"
+    assert main(["plan", scene_file, "--start", "0,0", "--goal", "6,0", "-o", str(svg)]) == 0
+    text = svg.read_text()
+    assert text.startswith("<svg") and "<polyline" in text and text.count("<path") >= 4
+
+
+def test_cli_plan_int_scene_and_errors(tmp_path, capsys):
+    import json
+
+    from minkowski2d.cli import main
+
+    f = tmp_path / "ring.json"
+    ring = [sq(0, 0, 4, 1), sq(0, 3, 4, 4), sq(0, 0, 1, 4), sq(3, 0, 4, 4)]
+    f.write_text(json.dumps({"obstacles": ring}))
+    assert main(["plan", str(f), "--start", "2,2", "--goal", "3,2"]) == 0
+    assert json.loads(capsys.readouterr().out)["path"] == [[2, 2], [3, 2]]
+    assert main(["plan", str(f), "--start", "2,2", "--goal", "5,5"]) == 2
+    assert "cannot be reached" in capsys.readouterr().err
+    assert main(["plan", str(f), "--start", "0.5,0.5", "--goal", "5,5"]) == 2
+    err = capsys.readouterr().err
+    assert "--start" in err and "obstacles[0]" in err
+    assert main(["plan", str(f), "--start", "x", "--goal", "5,5"]) == 2
+    bad = tmp_path / "bad.json"
+    bad.write_text("{")
+    assert main(["plan", str(bad), "--start", "0,0", "--goal", "5,5"]) == 2
+    assert "not JSON" in capsys.readouterr().err
+    bad.write_text(json.dumps({"obstacles": [[[0, 0], [2, 2], [2, 0], [0, 2]]]}))
+    assert main(["plan", str(bad), "--start=-1,-1", "--goal", "5,5"]) == 2
+    assert "obstacles[0]" in capsys.readouterr().err
+
+
+def test_cli_plan_feature_collection(tmp_path, capsys):
+    import json
+
+    from minkowski2d.cli import main
+
+    fc = {
+        "type": "FeatureCollection",
+        "features": [
+            {
+                "type": "Feature",
+                "properties": {"role": "robot"},
+                "geometry": {"type": "Polygon", "coordinates": [ROBOT]},
+            },
+            {
+                "type": "Feature",
+                "properties": {},
+                "geometry": {"type": "Polygon", "coordinates": [sq(2, -1, 4, 3)]},
+            },
+        ],
+    }
+    f = tmp_path / "scene.geojson"
+    f.write_text(json.dumps(fc))
+    assert main(["plan", str(f), "--start", "0,0", "--goal", "6,0"]) == 0
+    assert json.loads(capsys.readouterr().out)["path"][1] == [1.0, -2.0]

@@ -24,6 +24,7 @@ _PLUGINS = (
     "minkowski2d.animation.cli",
     "minkowski2d._cli_collision",
     "minkowski2d._cli_general",
+    "minkowski2d._cli_planning",
 )
 
 SEED_A = [(0, 0), (2, 0), (0, 2)]

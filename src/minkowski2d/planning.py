@@ -132,9 +132,7 @@ def _triangulate(poly: Any, name: str) -> list[np.ndarray]:
 
     def area2(ring: np.ndarray) -> Fraction:
         pts = [(Fraction(x), Fraction(y)) for x, y in ring.tolist()]
-        return abs(
-            sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]))
-        )
+        return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])))
 
     total = area2(shapely.get_coordinates(poly.exterior)[:-1]) - sum(
         area2(shapely.get_coordinates(h)[:-1]) for h in poly.interiors
@@ -387,6 +385,79 @@ class MotionPlanner:
 
     _frame: Any = None
 
+    @classmethod
+    def from_scene(cls, scene: Any, name: str = "scene") -> MotionPlanner:
+        """A planner from a scene mapping (the CLI's scene file, parsed).
+
+        Two layouts are accepted:
+
+        * ``{"obstacles": [...], "robot": ..., "workspace": ...}``: each obstacle (and the
+          robot, and a polygon workspace) is a list of ``[x, y]`` pairs or a GeoJSON
+          geometry object; ``robot`` missing or null is a point; ``workspace`` missing or
+          null is unbounded, ``[xmin, ymin, xmax, ymax]`` is a box.
+        * a GeoJSON FeatureCollection whose features carry ``"role"`` in their properties:
+          ``"obstacle"`` (the default), ``"robot"`` or ``"workspace"``.
+
+        JSON integers stay integers (exact int planning); any float makes a float scene.
+
+        Examples
+        --------
+        >>> scene = {"robot": [[-1, -1], [1, -1], [1, 1], [-1, 1]],
+        ...          "obstacles": [[[2, -1], [4, -1], [4, 3], [2, 3]]],
+        ...          "workspace": [-10, -10, 10, 10]}
+        >>> MotionPlanner.from_scene(scene).shortest_path((0, 0), (6, 0)).points.tolist()
+        [[0, 0], [1, -2], [5, -2], [6, 0]]
+        """
+
+        def geom(obj: Any, what: str) -> Any:
+            if obj is None:
+                return None
+            if isinstance(obj, dict):
+                import shapely.geometry
+
+                try:
+                    return shapely.geometry.shape(obj)
+                except Exception as exc:  # noqa: BLE001 - foreign errors become ours
+                    raise ShapeError(
+                        f"{name}: {what} is not a GeoJSON geometry ({exc})", argument=name
+                    ) from None
+            return obj
+
+        if not isinstance(scene, dict):
+            raise ShapeError(f"{name}: a scene must be a JSON object", argument=name)
+        if scene.get("type") == "FeatureCollection":
+            obstacles, robot, workspace = [], None, None
+            for k, feat in enumerate(scene.get("features", [])):
+                role = (feat.get("properties") or {}).get("role", "obstacle")
+                g = geom(feat.get("geometry"), f"features[{k}]")
+                if role == "robot":
+                    robot = g
+                elif role == "workspace":
+                    workspace = g
+                elif role == "obstacle":
+                    obstacles.append(g)
+                else:
+                    raise ShapeError(
+                        f"{name}: features[{k}] has an unknown role {role!r}",
+                        argument=name,
+                        hint="use obstacle, robot or workspace",
+                    )
+        else:
+            unknown = set(scene) - {"obstacles", "robot", "workspace"}
+            if unknown:
+                raise ShapeError(
+                    f"{name}: unknown scene keys {sorted(unknown)}",
+                    argument=name,
+                    hint="a scene has obstacles, robot and workspace",
+                )
+            obs = scene.get("obstacles", [])
+            if not isinstance(obs, list):
+                raise ShapeError(f"{name}: obstacles must be a list", argument=name)
+            obstacles = [geom(o, f"obstacles[{k}]") for k, o in enumerate(obs)]
+            robot = geom(scene.get("robot"), "robot")
+            workspace = geom(scene.get("workspace"), "workspace")
+        return cls(obstacles, robot, workspace=workspace)
+
     # ------------------------------------------------------------------ construction
     @staticmethod
     def _read_obstacles(obstacles: Any) -> list:
@@ -496,7 +567,9 @@ class MotionPlanner:
                 raise ShapeError("start: the workspace needs |x| <= 2**53 for float queries")
             twin = object.__new__(MotionPlanner)
             twin.__dict__.update(self.__dict__)
-            twin.pieces = type(self.pieces)(self.pieces.coords.astype(np.float64), self.pieces.offsets)
+            twin.pieces = type(self.pieces)(
+                self.pieces.coords.astype(np.float64), self.pieces.offsets
+            )
             twin.box = None if self.box is None else [float(v) for v in self.box]
             twin.kind = "float"
             twin._core = twin._make_core("float")
@@ -616,9 +689,7 @@ class MotionPlanner:
         if len(G) == 1 and len(S) != 1:
             G = G * len(S)
         if len(S) != len(G):
-            raise ShapeError(
-                f"goals: {len(G)} goals for {len(S)} starts", argument="goals"
-            )
+            raise ShapeError(f"goals: {len(G)} goals for {len(S)} starts", argument="goals")
         if not S:
             return []
         pl, out = self._route(S + G)
