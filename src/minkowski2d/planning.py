@@ -271,6 +271,8 @@ class MotionPlanner:
     workspace : (xmin, ymin, xmax, ymax) or polygon, optional
         The region the *whole robot* must stay inside (the reference point stays in
         ``workspace ⊖ robot``). ``None``: unbounded.
+    threads : int, default 1
+        Threads for building the visibility graph (the GIL is released).
 
     Notes
     -----
@@ -294,7 +296,10 @@ class MotionPlanner:
     [True, False, True]
     """
 
-    def __init__(self, obstacles: Any, robot: Any = None, *, workspace: Any = None) -> None:
+    def __init__(
+        self, obstacles: Any, robot: Any = None, *, workspace: Any = None, threads: int = 1
+    ) -> None:
+        self.threads = max(1, int(threads))
         obs = self._read_obstacles(obstacles)
         kinds = set()
         opieces: list[list[np.ndarray]] = []
@@ -551,7 +556,7 @@ class MotionPlanner:
         dt = np.int64 if kind == "int" else np.float64
         box = np.asarray(self.box if self.box is not None else [], dtype=dt)
         core = (_ext.PlannerI if kind == "int" else _ext.PlannerF)()
-        core.build(c, o, g, np.ascontiguousarray(box))
+        core.build(c, o, g, np.ascontiguousarray(box), self.threads)
         return core
 
     def _float_twin(self) -> Any:

@@ -47,7 +47,8 @@ void bind_planner(nb::module_& m, const char* name) {
       // coords (V, 2) of the solid pieces, offsets (P + 1,), groups (P,), box (4,) or empty
       .def(
           "build",
-          [](PL& self, PIn2<T> coords, PIn1<i64> off, PIn1<i64> grp, PIn1<T> box) {
+          [](PL& self, PIn2<T> coords, PIn1<i64> off, PIn1<i64> grp, PIn1<T> box, int threads) {
+            self.threads = threads;
             const T* c = coords.data();
             self.pc.assign(c, c + 2 * coords.shape(0));
             self.poff.assign(off.data(), off.data() + off.shape(0));
@@ -64,7 +65,7 @@ void bind_planner(nb::module_& m, const char* name) {
             self.build();
           },
           "coords"_a.noconvert(), "offsets"_a.noconvert(), "groups"_a.noconvert(),
-          "box"_a.noconvert())
+          "box"_a.noconvert(), "threads"_a = 1)
       // (status, group, path (k, 2)); status 0 ok, 1 start bad, 2 goal bad, 3 no path
       .def("query",
            [](const PL& self, T sx, T sy, T gx, T gy) {

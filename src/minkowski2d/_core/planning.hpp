@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -501,10 +502,11 @@ struct Planner {
     }
   }
 
-  void build_graph(PlanScratch& S) {
+  int threads = 1;
+
+  void pairs_of(i64 t, i64 nt, PlanScratch& S, std::vector<std::pair<int, int>>& edges) const {
     const i64 N = ncand();
-    std::vector<std::pair<int, int>> edges;
-    for (i64 i = 0; i < N; ++i) {
+    for (i64 i = t; i < N; i += nt) {
       const T ix = cv[2 * i], iy = cv[2 * i + 1];
       for (i64 j = i + 1; j < N; ++j) {
         const T jx = cv[2 * j], jy = cv[2 * j + 1];
@@ -512,6 +514,27 @@ struct Planner {
         if (blocked(ix, iy, jx, jy, S)) continue;
         edges.emplace_back((int)i, (int)j);
       }
+    }
+  }
+
+  void build_graph(PlanScratch& S) {
+    const i64 N = ncand();
+    std::vector<std::pair<int, int>> edges;
+    const int nt = std::max(1, std::min<int>(threads, (int)(N / 256) + 1));
+    if (nt == 1) {
+      pairs_of(0, 1, S, edges);
+    } else {
+      std::vector<std::vector<std::pair<int, int>>> part(nt);
+      std::vector<std::thread> pool;
+      for (int t = 1; t < nt; ++t)
+        pool.emplace_back([&, t]() {
+          PlanScratch St;
+          St.init((std::size_t)items());
+          pairs_of(t, nt, St, part[t]);
+        });
+      pairs_of(0, nt, S, part[0]);
+      for (auto& th : pool) th.join();
+      for (auto& p : part) edges.insert(edges.end(), p.begin(), p.end());
     }
     aoff.assign(N + 1, 0);
     for (auto& e : edges) {
