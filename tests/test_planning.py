@@ -435,7 +435,7 @@ def test_random_int_scenes_against_oracle(obs, robot, box, s, g):
     obs=st.lists(convex_int(), min_size=1, max_size=3),
     s=st.tuples(st.integers(-2, 10), st.integers(-2, 10)),
     g=st.tuples(st.integers(-2, 10), st.integers(-2, 10)),
-    scale=st.sampled_from([0.1, 0.3, 1e-5]),
+    scale=st.sampled_from([0.1, 0.3, 1e-5, 1e-290, 1e250, 3.0**-40]),
 )
 def test_random_float_scenes_against_oracle(obs, s, g, scale):
     fobs = [np.array(o, dtype=float) * scale + 0.25 for o in obs]

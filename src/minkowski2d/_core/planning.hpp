@@ -387,14 +387,21 @@ struct Planner {
     if (!(ext > 0) || !std::isfinite(ext)) ext = std::max(1.0, big);
     // slack covers the rounding of int64 -> double and of the walk's interpolation
     slack = (big + ext) * 0x1p-36 + 0x1p-1000;
-    double per = I > 0 ? area / (double)P : ext * ext;
-    cs = std::sqrt(std::max(per, ext * ext / 4e6));
+    double per = P > 0 ? area / (double)P : ext * ext;
+    // about one piece per cell, at most ~4 cells per item (and 4096 per side)
+    cs = std::sqrt(std::max(per, ext * ext / (4.0 * (double)I + 64.0)));
     if (!(cs > 0) || !std::isfinite(cs)) cs = ext;
     gx0 = X0 - slack;
     gy0 = Y0 - slack;
-    nx = std::max<i64>(1, std::min<i64>(4096, (i64)std::ceil((X1 - X0 + 2 * slack) / cs)));
-    ny = std::max<i64>(1, std::min<i64>(4096, (i64)std::ceil((Y1 - Y0 + 2 * slack) / cs)));
-    cs = std::max((X1 - X0 + 2 * slack) / (double)nx, (Y1 - Y0 + 2 * slack) / (double)ny);
+    const double wx = X1 - X0 + 2 * slack, wy = Y1 - Y0 + 2 * slack;
+    if (!std::isfinite(wx + wy + 4 * big) || !(cs > 0) || !std::isfinite(cs)) {
+      nx = ny = 1;  // one cell: every walk visits everything (no overflowing arithmetic)
+      cs = std::numeric_limits<double>::max();
+    } else {
+      nx = (i64)std::max(1.0, std::min(4096.0, std::ceil(wx / cs)));
+      ny = (i64)std::max(1.0, std::min(4096.0, std::ceil(wy / cs)));
+      cs = std::max(wx / (double)nx, wy / (double)ny);
+    }
     cell_off.assign(nx * ny + 1, 0);
     auto range = [&](i64 it, i64& xa, i64& xb, i64& ya, i64& yb) {
       const T* b = tbox.data() + 4 * it;
