@@ -596,3 +596,35 @@ def test_cli_plan_feature_collection(tmp_path, capsys):
     f.write_text(json.dumps(fc))
     assert main(["plan", str(f), "--start", "0,0", "--goal", "6,0"]) == 0
     assert json.loads(capsys.readouterr().out)["path"][1] == [1.0, -2.0]
+
+
+ROOMS = [
+    None,
+    (-3, -3, 11, 11),
+    [(-3, -3), (11, -3), (11, 4), (4, 4), (4, 11), (-3, 11)],
+    [(-3, -3), (11, -3), (11, 11), (6, 11), (6, 6), (2, 6), (2, 11), (-3, 11)],
+]
+
+
+@settings(max_examples=20 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    obs=st.lists(st.one_of(l_shapes(), convex_int()), min_size=0, max_size=3),
+    robot=st.sampled_from(
+        [None, [(0, 0), (1, 0), (1, 2), (0, 2)], [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]]
+    ),
+    room=st.sampled_from(ROOMS),
+    s=st.tuples(st.integers(-3, 10), st.integers(-3, 10)),
+    g=st.tuples(st.integers(-3, 10), st.integers(-3, 10)),
+)
+def test_non_convex_robot_and_workspace_against_oracle(obs, robot, room, s, g):
+    pl = mk.MotionPlanner(obs, robot=robot, workspace=room)
+    orc = oracle_of(pl)
+    check_against(pl, orc, s, g)
+    # the batch gives the same answers as single queries
+    res = None
+    try:
+        res = pl.shortest_paths([s], [g])[0]
+    except GeometryError:
+        pass
+    if res is not None:
+        assert res.points.tolist() == pl.shortest_path(s, g).points.tolist()
