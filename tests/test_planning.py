@@ -628,3 +628,24 @@ def test_non_convex_robot_and_workspace_against_oracle(obs, robot, room, s, g):
         pass
     if res is not None:
         assert res.points.tolist() == pl.shortest_path(s, g).points.tolist()
+
+
+def test_plot_is_lazy_and_works():
+    plt = pytest.importorskip("matplotlib.pyplot")
+    pl = mk.MotionPlanner([sq(2, -1, 4, 3)], robot=ROBOT, workspace=(-5, -5, 10, 10))
+    ax = pl.plot(path=pl.shortest_path((0, 0), (6, 0)))
+    assert len(ax.lines) >= 2
+    plt.close("all")
+
+
+def test_core_hulls_a_folded_piece():
+    # a "piece" with a collinear and a reflex vertex (as a rounded float sum could be) is
+    # replaced by its convex hull: the core's primitives need strictly convex pieces
+    from minkowski2d._core import _ext
+
+    core = _ext.PlannerF()
+    piece = np.array([[0, 0], [1, 0], [2, 0], [2, 2], [1, 1.9], [0, 2]], dtype=np.float64)
+    core.build(piece, np.array([0, 6]), np.array([0]), np.zeros(0))
+    assert sorted(map(tuple, core.candidates().tolist())) == [(0, 0), (0, 2), (2, 0), (2, 2)]
+    assert not core.segment_free(1.0, 1.95, 1.0, 3.0)  # inside the hull, outside the fold
+    assert core.segment_free(-1.0, 2.0, 3.0, 2.0)  # along the hull's top edge

@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "convex.hpp"
 #include "exact.hpp"
 
 namespace mk {
@@ -580,7 +581,52 @@ struct Planner {
     }
   }
 
+  // Every piece must be strictly convex (CCW, no collinear vertex) for the primitives
+  // above. Exact int sums are; correctly rounded float sums can fold by an ulp: such a
+  // piece is replaced by the convex hull of its vertices (it only grows, by rounding).
+  void convexify() {
+    std::vector<T> npc;
+    std::vector<i64> noff{0};
+    std::vector<int> ngrp;
+    const T* v = pc.data();
+    for (i64 p = 0; p < (i64)pgrp.size(); ++p) {
+      const i64 lo = poff[p], hi = poff[p + 1], k = hi - lo;
+      bool ok = k >= 3;
+      for (i64 t = 0; ok && t < k; ++t) {
+        i64 h = lo + (t + k - 1) % k, i = lo + t, j = lo + (t + 1) % k;
+        ok = orient(v, h, i, j) > 0;
+      }
+      if (ok) {
+        npc.insert(npc.end(), v + 2 * lo, v + 2 * hi);
+      } else {
+        std::vector<i64> order(k), hull(2 * k + 1);
+        for (i64 t = 0; t < k; ++t) order[t] = lo + t;
+        std::sort(order.begin(), order.end(), [&](i64 a, i64 b) {
+          return v[2 * a] < v[2 * b] || (v[2 * a] == v[2 * b] && v[2 * a + 1] < v[2 * b + 1]);
+        });
+        order.erase(std::unique(order.begin(), order.end(),
+                                [&](i64 a, i64 b) {
+                                  return v[2 * a] == v[2 * b] && v[2 * a + 1] == v[2 * b + 1];
+                                }),
+                    order.end());
+        if (order.size() < 3) continue;
+        i64 m = hull_sorted(v, order.data(), (i64)order.size(), hull.data());
+        if (m < 3) continue;  // collinear: no interior, blocks nothing
+        for (i64 t = 0; t < m; ++t) {
+          npc.push_back(v[2 * hull[t]]);
+          npc.push_back(v[2 * hull[t] + 1]);
+        }
+      }
+      noff.push_back((i64)npc.size() / 2);
+      ngrp.push_back(pgrp[p]);
+    }
+    pc.swap(npc);
+    poff.swap(noff);
+    pgrp.swap(ngrp);
+  }
+
   void build() {
+    convexify();
     P = (i64)pgrp.size();
     build_seams();
     build_grid();
