@@ -22,6 +22,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -163,7 +164,7 @@ struct Planner {
   }
 
   // the closed segment [p, q] meets the open interior of some group's union
-  bool blocked(T px, T py, T qx, T qy, PlanScratch& S) const {
+  bool blocked(T px, T py, T qx, T qy, PlanScratch& S, int* blocker = nullptr) const {
     if (px == qx && py == qy) return interior_group(px, py, S) >= 0;
     const std::uint32_t tk = S.next();
     const double dpx = (double)px, dpy = (double)py, dqx = (double)qx, dqy = (double)qy;
@@ -202,7 +203,10 @@ struct Planner {
           int it = cell_items[e];
           if (S.stamp[it] == tk) continue;
           S.stamp[it] = tk;
-          if (item_blocks(it, px, py, qx, qy)) return true;
+          if (item_blocks(it, px, py, qx, qy)) {
+            if (blocker) *blocker = it;
+            return true;
+          }
         }
       }
     }
@@ -512,14 +516,93 @@ struct Planner {
 
   int threads = 1;
 
+  // Structure-of-arrays doubles for the tangent pre-filter: the candidate and, when it
+  // has exactly one corner, that corner (NaN otherwise: the filter then never decides).
+  // Only used when every coordinate converts to double exactly and the products can
+  // neither overflow nor underflow (fast = true); the exact test decides the rest.
+  std::vector<double> fx, fy, fux, fuy, fwx, fwy;
+  bool fast = false;
+
+  void build_filter() {
+    const i64 N = ncand();
+    fast = true;
+    const double NaN = std::numeric_limits<double>::quiet_NaN();
+    fx.resize(N), fy.resize(N), fux.resize(N), fuy.resize(N), fwx.resize(N), fwy.resize(N);
+    auto ok = [&](T v) {
+      if constexpr (std::is_floating_point_v<T>) {
+        double a = std::fabs((double)v);
+        return a == 0.0 || (a >= 0x1p-400 && a <= 0x1p400);
+      } else {
+        return v <= ((T)1 << 53) && v >= -((T)1 << 53);
+      }
+    };
+    for (i64 a = 0; a < N; ++a) {
+      fx[a] = (double)cv[2 * a];
+      fy[a] = (double)cv[2 * a + 1];
+      fast = fast && ok(cv[2 * a]) && ok(cv[2 * a + 1]);
+      if (coff[a + 1] - coff[a] == 1) {
+        const T* q = corner.data() + 4 * coff[a];
+        fux[a] = (double)q[0], fuy[a] = (double)q[1], fwx[a] = (double)q[2], fwy[a] = (double)q[3];
+        fast = fast && ok(q[0]) && ok(q[1]) && ok(q[2]) && ok(q[3]);
+      } else {
+        fux[a] = fuy[a] = fwx[a] = fwy[a] = NaN;
+      }
+    }
+  }
+
+  // skip[j] = 1 when the pair (i, j) is certainly not tangent at i or at j
+  void prefilter(i64 i, std::vector<std::uint8_t>& skip) const {
+    const i64 N = ncand();
+    const double vx = fx[i], vy = fy[i], ux = fux[i], uy = fuy[i], wx = fwx[i], wy = fwy[i];
+    const double* X = fx.data();
+    const double* Y = fy.data();
+    const double* UX = fux.data();
+    const double* UY = fuy.data();
+    const double* WX = fwx.data();
+    const double* WY = fwy.data();
+    std::uint8_t* sk = skip.data();
+    for (i64 j = i + 1; j < N; ++j) {
+      const double ax = X[j], ay = Y[j];
+      // at i: orient(a, v, u) and orient(a, v, w)
+      double l1 = (vx - ax) * (uy - ay), r1 = (vy - ay) * (ux - ax), d1 = l1 - r1;
+      double b1 = ERRBOUND * (std::fabs(l1) + std::fabs(r1));
+      double l2 = (vx - ax) * (wy - ay), r2 = (vy - ay) * (wx - ax), d2 = l2 - r2;
+      double b2 = ERRBOUND * (std::fabs(l2) + std::fabs(r2));
+      const bool sep_i = ((d1 > b1) & (-d2 > b2)) | ((-d1 > b1) & (d2 > b2));
+      // at j: orient(v, a, U) and orient(v, a, W)
+      double l3 = (ax - vx) * (UY[j] - vy), r3 = (ay - vy) * (UX[j] - vx), d3 = l3 - r3;
+      double b3 = ERRBOUND * (std::fabs(l3) + std::fabs(r3));
+      double l4 = (ax - vx) * (WY[j] - vy), r4 = (ay - vy) * (WX[j] - vx), d4 = l4 - r4;
+      double b4 = ERRBOUND * (std::fabs(l4) + std::fabs(r4));
+      const bool sep_j = ((d3 > b3) & (-d4 > b4)) | ((-d3 > b3) & (d4 > b4));
+      sk[j] = (std::uint8_t)(sep_i | sep_j);
+    }
+  }
+
   void pairs_of(i64 t, i64 nt, PlanScratch& S, std::vector<std::pair<int, int>>& edges) const {
     const i64 N = ncand();
+    std::vector<std::uint8_t> skip(fast ? N : 0);
     for (i64 i = t; i < N; i += nt) {
       const T ix = cv[2 * i], iy = cv[2 * i + 1];
+      if (fast) prefilter(i, skip);
+      // the last few blockers met from i: neighbouring pairs are often blocked by the
+      // same piece, and one exact test of it is cheaper than a grid walk
+      int cache[4] = {-1, -1, -1, -1};
+      int slot = 0;
       for (i64 j = i + 1; j < N; ++j) {
+        if (fast && skip[j]) continue;
         const T jx = cv[2 * j], jy = cv[2 * j + 1];
         if (!tangent(jx, jy, i) || !tangent(ix, iy, j)) continue;
-        if (blocked(ix, iy, jx, jy, S)) continue;
+        bool hit = false;
+        for (int c = 0; c < 4 && !hit; ++c)
+          hit = cache[c] >= 0 && item_blocks(cache[c], ix, iy, jx, jy);
+        if (hit) continue;
+        int b = -1;
+        if (blocked(ix, iy, jx, jy, S, &b)) {
+          cache[slot] = b;
+          slot = (slot + 1) & 3;
+          continue;
+        }
         edges.emplace_back((int)i, (int)j);
       }
     }
@@ -527,6 +610,7 @@ struct Planner {
 
   void build_graph(PlanScratch& S) {
     const i64 N = ncand();
+    build_filter();
     std::vector<std::pair<int, int>> edges;
     const int nt = std::max(1, std::min<int>(threads, (int)(N / 256) + 1));
     if (nt == 1) {
