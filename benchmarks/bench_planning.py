@@ -15,6 +15,10 @@ Usage::
 
     python benchmarks/bench_planning.py                 # K = 10, 100, 1000 (peers to 100)
     python benchmarks/bench_planning.py --ks 10 100 1000 10000 --peer-max-k 100
+
+Also a checkerboard scene (``--checker 50``): unit squares touching at their corners, so
+the free space is connected only through pinch points -- the closed free space makes those
+passages open, and the peers' handling of touching obstacles is what is measured there.
 """
 
 from __future__ import annotations
@@ -50,6 +54,20 @@ def scene(K: int, seed: int) -> tuple[list[np.ndarray], tuple[int, int, int, int
         if len(h) < 3:
             h = np.array([[cx - 10, cy - 10], [cx + 10, cy - 10], [cx, cy + 10]], np.int64)
         obs.append(np.asarray(h, np.int64))
+    return obs, (0, 0, n * CELL, n * CELL)
+
+
+def checkerboard(K: int, seed: int) -> tuple[list[np.ndarray], tuple[int, int, int, int]]:
+    """K unit squares (side CELL) on the black cells of a checkerboard: neighbours touch
+    at corners only, so the free space is connected through pinch points alone (an
+    ordinary tiled floor plan); seeded for the same interface as :func:`scene`."""
+    n = max(2, math.ceil(math.sqrt(2 * K)))
+    obs = []
+    for i in range(n):
+        for j in range(n):
+            if (i + j) % 2 == 0 and len(obs) < K:
+                x, y = i * CELL, j * CELL
+                obs.append(np.array([[x, y], [x + CELL, y], [x + CELL, y + CELL], [x, y + CELL]]))
     return obs, (0, 0, n * CELL, n * CELL)
 
 
@@ -168,6 +186,9 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--ks", type=int, nargs="+", default=[10, 100, 1000])
     ap.add_argument("--queries", type=int, default=50)
+    ap.add_argument(
+        "--checker", type=int, nargs="*", default=[50], help="checkerboard scenes (pinch points)"
+    )
     ap.add_argument("--peer-max-k", type=int, default=100, help="skip the peers beyond this K")
     ap.add_argument("--seed", type=int, default=1)
     args = ap.parse_args()
@@ -177,12 +198,14 @@ def main() -> None:
     )
     print("|---|---|---|---|---|---|---|")
     notes = []
-    for K in args.ks:
-        obs, box = scene(K, args.seed + K)
+    runs = [("convex", K) for K in args.ks] + [("checker", K) for K in args.checker]
+    for kind, K in runs:
+        obs, box = (scene if kind == "convex" else checkerboard)(K, args.seed + K)
+        label = K if kind == "convex" else f"{K} checkerboard"
         qs = queries(obs, box, args.queries, args.seed + K)
         pl, prep, times, ours = run_ours(obs, box, qs)
         check = pl._float_twin()._core.segment_free
-        print(stats("minkowski2d", K, prep, times, ours, ours, check, qs), flush=True)
+        print(stats("minkowski2d", label, prep, times, ours, ours, check, qs), flush=True)
         if K > args.peer_max_k:
             notes.append(f"K={K}: peers skipped (minutes per scene)")
             continue
@@ -192,7 +215,10 @@ def main() -> None:
             except ImportError:
                 notes.append(f"{name} not installed")
                 continue
-            print(stats(name, K, prep, times, paths, ours, check, qs), flush=True)
+            except Exception as exc:  # noqa: BLE001 - a peer refusing the scene
+                notes.append(f"{name} failed on K={label}: {type(exc).__name__}: {exc}")
+                continue
+            print(stats(name, label, prep, times, paths, ours, check, qs), flush=True)
     for n in notes:
         print(f"note: {n}")
 

@@ -524,7 +524,7 @@ class MotionPlanner:
         if _is_shapely(workspace):
             inner = workspace
         else:
-            inner = shapely.Polygon(np.asarray(allw if False else _ring_coords(workspace)))
+            inner = shapely.Polygon(_ring_coords(workspace))
         if not inner.is_valid:
             raise SelfIntersectionError(
                 f"workspace: not a simple polygon ({shapely.is_valid_reason(inner)})",
