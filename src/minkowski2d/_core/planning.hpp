@@ -585,22 +585,30 @@ struct Planner {
     for (i64 i = t; i < N; i += nt) {
       const T ix = cv[2 * i], iy = cv[2 * i + 1];
       if (fast) prefilter(i, skip);
-      // the last few blockers met from i: neighbouring pairs are often blocked by the
-      // same piece, and one exact test of it is cheaper than a grid walk
-      int cache[4] = {-1, -1, -1, -1};
-      int slot = 0;
+      // the last blocker met from i in each of 128 direction bins: pairs in about the same
+      // direction are often blocked by the same piece, and one exact test of it is
+      // cheaper than a grid walk (the bin is a hint only; item_blocks decides exactly)
+      constexpr int NB = 128;
+      int cache[NB];
+      std::fill(cache, cache + NB, -1);
+      const double dix = (double)ix, diy = (double)iy;
       for (i64 j = i + 1; j < N; ++j) {
         if (fast && skip[j]) continue;
         const T jx = cv[2 * j], jy = cv[2 * j + 1];
         if (!tangent(jx, jy, i) || !tangent(ix, iy, j)) continue;
-        bool hit = false;
-        for (int c = 0; c < 4 && !hit; ++c)
-          hit = cache[c] >= 0 && item_blocks(cache[c], ix, iy, jx, jy);
-        if (hit) continue;
+        const double ddx = (double)jx - dix, ddy = (double)jy - diy;
+        const double den = std::fabs(ddx) + std::fabs(ddy);
+        double pa = den > 0 ? ddy / den : 0.0;  // pseudo-angle in [0, 4)
+        pa = ddx >= 0 ? (ddy >= 0 ? pa : 4.0 + pa) : 2.0 - pa;
+        int bin = (int)(pa * (NB / 4));
+        bin = bin < 0 ? 0 : (bin > NB - 1 ? NB - 1 : bin);
+        const int b0 = cache[bin], b1 = cache[(bin + 1) % NB], b2 = cache[(bin + NB - 1) % NB];
+        if (b0 >= 0 && item_blocks(b0, ix, iy, jx, jy)) continue;
+        if (b1 >= 0 && b1 != b0 && item_blocks(b1, ix, iy, jx, jy)) continue;
+        if (b2 >= 0 && b2 != b0 && b2 != b1 && item_blocks(b2, ix, iy, jx, jy)) continue;
         int b = -1;
         if (blocked(ix, iy, jx, jy, S, &b)) {
-          cache[slot] = b;
-          slot = (slot + 1) & 3;
+          cache[bin] = b;
           continue;
         }
         edges.emplace_back((int)i, (int)j);
