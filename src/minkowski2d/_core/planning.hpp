@@ -554,13 +554,13 @@ struct Planner {
   void prefilter(i64 i, std::vector<std::uint8_t>& skip) const {
     const i64 N = ncand();
     const double vx = fx[i], vy = fy[i], ux = fux[i], uy = fuy[i], wx = fwx[i], wy = fwy[i];
-    const double* X = fx.data();
-    const double* Y = fy.data();
-    const double* UX = fux.data();
-    const double* UY = fuy.data();
-    const double* WX = fwx.data();
-    const double* WY = fwy.data();
-    std::uint8_t* sk = skip.data();
+    const double* __restrict X = fx.data();
+    const double* __restrict Y = fy.data();
+    const double* __restrict UX = fux.data();
+    const double* __restrict UY = fuy.data();
+    const double* __restrict WX = fwx.data();
+    const double* __restrict WY = fwy.data();
+    std::uint8_t* __restrict sk = skip.data();
     for (i64 j = i + 1; j < N; ++j) {
       const double ax = X[j], ay = Y[j];
       // at i: orient(a, v, u) and orient(a, v, w)
