@@ -104,9 +104,9 @@ def length(path: list) -> float:
     )
 
 
-def run_ours(obs, box, qs):
+def run_ours(obs, box, qs, threads=1):
     t0 = time.perf_counter()
-    pl = mk.MotionPlanner(obs, workspace=box)
+    pl = mk.MotionPlanner(obs, workspace=box, threads=threads)
     prep = time.perf_counter() - t0
     times, paths = [], []
     for s, g in qs:
@@ -189,6 +189,8 @@ def main() -> None:
     ap.add_argument(
         "--checker", type=int, nargs="*", default=[50], help="checkerboard scenes (pinch points)"
     )
+    ap.add_argument("--threads", type=int, nargs="*", default=[2], help="extra rows: threads=")
+    ap.add_argument("--threads-min-k", type=int, default=1000)
     ap.add_argument("--peer-max-k", type=int, default=100, help="skip the peers beyond this K")
     ap.add_argument("--seed", type=int, default=1)
     args = ap.parse_args()
@@ -206,6 +208,11 @@ def main() -> None:
         pl, prep, times, ours = run_ours(obs, box, qs)
         check = pl._float_twin()._core.segment_free
         print(stats("minkowski2d", label, prep, times, ours, ours, check, qs), flush=True)
+        for th in args.threads:
+            if th > 1 and K >= args.threads_min_k:
+                _, prep, times, paths = run_ours(obs, box, qs, th)
+                name = f"minkowski2d threads={th}"
+                print(stats(name, label, prep, times, paths, ours, check, qs), flush=True)
         if K > args.peer_max_k:
             notes.append(f"K={K}: peers skipped (minutes per scene)")
             continue
