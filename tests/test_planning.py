@@ -649,3 +649,36 @@ def test_core_hulls_a_folded_piece():
     assert sorted(map(tuple, core.candidates().tolist())) == [(0, 0), (0, 2), (2, 0), (2, 2)]
     assert not core.segment_free(1.0, 1.95, 1.0, 3.0)  # inside the hull, outside the fold
     assert core.segment_free(-1.0, 2.0, 3.0, 2.0)  # along the hull's top edge
+
+
+def test_threads_give_the_same_graph():
+    rng = np.random.default_rng(5)
+    obs = []
+    for i in range(6):
+        for j in range(6):
+            c = np.array([i * 10 + 5, j * 10 + 5]) + rng.integers(-2, 3, 2)
+            r = int(rng.integers(2, 5))
+            obs.append([tuple(c + d) for d in [(-r, -r), (r, -r + 1), (r - 1, r), (-r, r - 2)]])
+    a = mk.MotionPlanner(obs, threads=1)._core.adjacency()
+    b = mk.MotionPlanner(obs, threads=2)._core.adjacency()
+    ea = {(i, int(j)) for i in range(len(a[0]) - 1) for j in a[1][a[0][i] : a[0][i + 1]]}
+    eb = {(i, int(j)) for i in range(len(b[0]) - 1) for j in b[1][b[0][i] : b[0][i + 1]]}
+    assert ea == eb and len(ea) > 100
+
+
+@pytest.mark.parametrize("shift", [0, 2**40, -(2**59)])
+def test_large_int_coordinates_stay_exact(shift):
+    k = 2**57
+    obs = [[(x * k + shift, y * k + shift) for x, y in sq(2, -1, 4, 3)]]
+    robot = [(x * k, y * k) for x, y in ROBOT]
+    pl = mk.MotionPlanner(obs, robot=robot)
+    s, g = (shift, shift), (6 * k + shift, shift)
+    p = pl.shortest_path(s, g)
+    assert p.points.dtype == np.int64
+    want = [(0, 0), (1, -2), (5, -2), (6, 0)]
+    assert p.points.tolist() == [[x * k + shift, y * k + shift] for x, y in want]
+    orc = oracle_of(pl)
+    for a, b in zip(p.points.tolist(), p.points.tolist()[1:]):
+        assert not orc.blocked(a, b)
+    with pytest.raises(ShapeError):
+        mk.MotionPlanner([[(0, 0), (2**62, 0), (0, 1)]], robot=[(-1, 0), (0, 0), (0, -1)])
