@@ -682,3 +682,14 @@ def test_large_int_coordinates_stay_exact(shift):
         assert not orc.blocked(a, b)
     with pytest.raises(ShapeError):
         mk.MotionPlanner([[(0, 0), (2**62, 0), (0, 1)]], robot=[(-1, 0), (0, 0), (0, -1)])
+
+
+def test_geoseries_and_object_array_input():
+    shapely = pytest.importorskip("shapely")
+    geoms = np.array([shapely.box(2, -1, 4, 3), shapely.box(10, 10, 11, 11)], dtype=object)
+    pl = mk.MotionPlanner(geoms, robot=ROBOT)
+    assert pl.shortest_path((0, 0), (6, 0)).points.tolist()[1] == [1.0, -2.0]
+    gpd = pytest.importorskip("geopandas")
+    gs = gpd.GeoSeries(list(geoms), index=[7, 9])
+    pl = mk.MotionPlanner(gs, robot=ROBOT)
+    assert pl.shortest_path((0, 0), (6, 0)).points.tolist()[1] == [1.0, -2.0]
