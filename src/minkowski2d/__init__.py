@@ -49,6 +49,7 @@ from .nesting import (
     rotate_part,
 )
 from .offset import OffsetArcs, offset, offset_arcs
+from .planning import MotionPlanner, Path
 from .trace import MergeTrace, merge_trace
 
 
@@ -105,5 +106,7 @@ __all__ = [
     "OffsetArcs",
     "Distance",
     "Penetration",
+    "MotionPlanner",
+    "Path",
     "__version__",
 ]

@@ -34,6 +34,7 @@ _PLUGINS = (
     "minkowski2d._cli_features",
     "minkowski2d._cli_offset",
     "minkowski2d._cli_nesting",
+    "minkowski2d._cli_planning",
 )
 
 SEED_A = [(0, 0), (2, 0), (0, 2)]

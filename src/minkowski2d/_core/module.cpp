@@ -532,6 +532,7 @@ inline nb::tuple check_finite(In2<double> P) {
 
 void bind_collision(nb::module_& m);  // collision.cpp
 void bind_decompose(nb::module_& m);  // decompose.cpp
+void bind_planning(nb::module_& m);   // planning.cpp
 
 }  // namespace mk_bind
 
@@ -589,5 +590,6 @@ NB_MODULE(_ext, m) {
   });
   m.def("selftest", &mk::fp_contract_off_selftest);
   bind_collision(m);
+  bind_planning(m);
   bind_decompose(m);
 }

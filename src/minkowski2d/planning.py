@@ -1,0 +1,873 @@
+"""Translational motion planning: exact shortest paths for a polygonal robot among
+polygonal obstacles.
+
+Every obstacle ``O`` is inflated by the reflected robot into its configuration-space
+obstacle ``O ⊕ (−R)`` (pieces ``O_i ⊕ (−R_j)`` of convex pieces when either is not
+convex); the robot's reference point must stay out of the *open* interior of each of
+them and, with a workspace ``W``, inside ``W ⊖ R``. Touching is allowed: a passage
+exactly as wide as the robot is open, and two C-obstacles that meet at one point leave
+the gaps beside it open. The seams between the convex pieces of one obstacle are not
+passages.
+
+The compiled core (:mod:`minkowski2d._core`, ``planning.hpp``) builds a reduced
+visibility graph directly on the overlapping convex pieces (no union, no mesh: both
+would close zero-width passages): bend points are piece vertices outside every
+C-obstacle's open interior, edges are the mutually visible pairs whose segment is tangent
+at both ends, and every visibility and containment decision is an exact sign. Queries
+connect the start and the goal by the same exact visibility and run A*. See
+``docs/planning.md``.
+
+Examples
+--------
+>>> import minkowski2d as mk
+>>> planner = mk.MotionPlanner([[(2, -1), (4, -1), (4, 3), (2, 3)]],
+...                            robot=[(-1, -1), (1, -1), (1, 1), (-1, 1)])
+>>> path = planner.shortest_path((0, 0), (6, 0))
+>>> path.points.tolist()
+[[0, 0], [1, -2], [5, -2], [6, 0]]
+>>> round(path.length, 6)
+8.472136
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from typing import Any
+
+import numpy as np
+
+from . import _dispatch as D
+from ._core import _ext
+from .errors import GeometryError, NoPathError, SelfIntersectionError, ShapeError
+
+__all__ = ["MotionPlanner", "Path"]
+
+_NOT_CONVEX = (D.Status.TURNS_BOTH_WAYS, D.Status.SPIKE, D.Status.WINDS_TWICE)
+_F53 = 1 << 53
+_INT_LIMIT = int(_ext.INT_LIMIT)
+
+
+# --------------------------------------------------------------------------------------
+# results
+
+
+class Path:
+    """A collision-free path of the robot's reference point.
+
+    Attributes
+    ----------
+    points : (k, 2) ndarray
+        The start, the bend points (C-obstacle vertices) and the goal, in order; int64 when
+        the scene and the query are integers (bend points exact), else float64. ``k`` is 1
+        when start and goal coincide.
+    length : float
+        Euclidean length (each segment's length correctly rounded, summed with fsum).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> p = Path(np.array([[0, 0], [3, 4]]))
+    >>> p.length, len(p)
+    (5.0, 2)
+    """
+
+    __slots__ = ("points", "length")
+
+    def __init__(self, points: np.ndarray) -> None:
+        self.points = points
+        self.length = math.fsum(
+            math.hypot(float(b[0]) - float(a[0]), float(b[1]) - float(a[1]))
+            for a, b in zip(points.tolist(), points.tolist()[1:])
+        )
+
+    def __len__(self) -> int:
+        return len(self.points)
+
+    def __repr__(self) -> str:
+        return f"Path({len(self.points)} points, length={self.length!r})"
+
+    def plot(self, ax: Any = None, **kwargs: Any) -> Any:
+        """Draw the path with matplotlib (imported only here); returns the axes.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> ax = Path(np.array([[0, 0], [1, 1]])).plot()  # doctest: +SKIP
+        """
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots()
+            ax.set_aspect("equal")
+        kw = {"color": "tab:blue", "lw": 2, "marker": "o", "ms": 3}
+        kw.update(kwargs)
+        pts = self.points.astype(np.float64)
+        ax.plot(pts[:, 0], pts[:, 1], **kw)
+        return ax
+
+
+# --------------------------------------------------------------------------------------
+# input
+
+
+def _is_shapely(obj: Any) -> bool:
+    return type(obj).__module__.startswith("shapely")
+
+
+def _triangulate(poly: Any, name: str) -> list[np.ndarray]:
+    """Convex pieces (triangles) of a valid shapely polygon with holes; every triangle
+    vertex is an input vertex, bit for bit (GEOS's constrained Delaunay triangulation);
+    the triangles are checked to tile the polygon (areas sum exactly)."""
+    import shapely
+
+    if not poly.is_valid:
+        raise SelfIntersectionError(
+            f"{name}: not a simple polygon ({shapely.is_valid_reason(poly)})",
+            argument=name,
+            hint="fix the ring (it must not cross itself)",
+        )
+    tris = shapely.get_parts(shapely.constrained_delaunay_triangles(poly))
+    pieces = [shapely.get_coordinates(t)[:-1] for t in tris]
+
+    def area2(ring: np.ndarray) -> Fraction:
+        pts = [(Fraction(x), Fraction(y)) for x, y in ring.tolist()]
+        return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])))
+
+    total = area2(shapely.get_coordinates(poly.exterior)[:-1]) - sum(
+        area2(shapely.get_coordinates(h)[:-1]) for h in poly.interiors
+    )
+    if sum(area2(p) for p in pieces) != total:  # pragma: no cover - GEOS safeguard
+        raise SelfIntersectionError(
+            f"{name}: the triangulation does not tile the polygon",
+            argument=name,
+            hint="simplify the polygon",
+        )
+    return pieces
+
+
+def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
+    """Convex pieces of one polygon-like input and their kind ("int" or "float")."""
+    if _is_shapely(obj):
+        gt = obj.geom_type
+        if gt == "MultiPolygon" or gt == "GeometryCollection":
+            out: list[np.ndarray] = []
+            for k, part in enumerate(obj.geoms):
+                out += _pieces(part, f"{name}.geoms[{k}]")[0]
+            return out, "float"
+        if gt == "Polygon":
+            if obj.is_empty:
+                raise ShapeError(f"{name}: empty polygon", argument=name)
+            if len(obj.interiors):
+                return _triangulate(obj, name), "float"
+            import shapely
+
+            obj = shapely.get_coordinates(obj.exterior)[:-1]
+    data, out_kind, path = D.one(obj, name)
+    if path == "py":
+        raise ShapeError(
+            f"{name}: the planner takes int64 (|x| < 2**62) or float64 coordinates",
+            argument=name,
+            hint="scale the scene or pass floats",
+        )
+    kind = "int" if path == "i" else "float"
+    idx, _, code, v = (_ext.normalize_i if path == "i" else _ext.normalize_f)(data)
+    if code == D.Status.OK:
+        return [np.ascontiguousarray(data[idx])], kind
+    if code not in _NOT_CONVEX:
+        D.raise_status(code, v, name, data)
+    import shapely
+
+    if kind == "int" and np.abs(data).max() > _F53:
+        raise ShapeError(
+            f"{name}: a non-convex polygon needs |x| <= 2**53",
+            argument=name,
+            hint="scale the polygon down",
+        )
+    pieces = _triangulate(shapely.Polygon(data.astype(np.float64)), name)
+    if kind == "int":
+        pieces = [p.astype(np.int64) for p in pieces]
+    return pieces, kind
+
+
+def _as_kind(arrs: list[np.ndarray], kind: str, name: str) -> list[np.ndarray]:
+    if kind == "int":
+        return [np.ascontiguousarray(a, dtype=np.int64) for a in arrs]
+    out = []
+    for a in arrs:
+        if a.dtype == np.int64 and a.size and int(np.abs(a).max()) > _F53:
+            raise ShapeError(
+                f"{name}: ints beyond 2**53 next to floats cannot be converted exactly",
+                argument=name,
+                hint="pass all coordinates as ints, or scale down",
+            )
+        out.append(np.ascontiguousarray(a, dtype=np.float64))
+    return out
+
+
+def _is_box(workspace: Any) -> bool:
+    if _is_shapely(workspace) or isinstance(workspace, (str, bytes)):
+        return False
+    try:
+        a = np.asarray(workspace, dtype=object)
+    except Exception:  # noqa: BLE001
+        return False
+    return a.shape == (4,)
+
+
+def _scalar(v: Any, name: str) -> int | float:
+    if isinstance(v, (bool, np.bool_)):
+        raise ShapeError(f"{name}: a coordinate must be a number, got a bool", argument=name)
+    if isinstance(v, (int, np.integer)):
+        return int(v)
+    if isinstance(v, (float, np.floating)):
+        f = float(v)
+        if not math.isfinite(f):
+            raise GeometryError(f"{name}: a coordinate is not finite", argument=name)
+        return f
+    if isinstance(v, Fraction):
+        f = float(v)
+        if Fraction(f) != v:
+            raise ShapeError(
+                f"{name}: {v} is not a float64 value", argument=name, hint="pass floats"
+            )
+        return f
+    raise ShapeError(f"{name}: a coordinate must be a number, got {type(v).__name__}")
+
+
+def _point(p: Any, name: str) -> tuple[Any, Any]:
+    if _is_shapely(p):
+        if p.geom_type != "Point":
+            raise ShapeError(f"{name}: expected a point, got a {p.geom_type}", argument=name)
+        return (float(p.x), float(p.y))
+    try:
+        seq = list(p)
+    except TypeError:
+        raise ShapeError(f"{name}: expected a point (x, y)", argument=name) from None
+    if len(seq) != 2:
+        raise ShapeError(f"{name}: expected a point (x, y), got {len(seq)} values", argument=name)
+    return (_scalar(seq[0], name), _scalar(seq[1], name))
+
+
+def _fmt(v: Any) -> str:
+    return repr(v.item() if hasattr(v, "item") else v)
+
+
+# --------------------------------------------------------------------------------------
+# the planner
+
+
+class MotionPlanner:
+    """Exact shortest paths for a translating polygonal robot among polygonal obstacles.
+
+    Parameters
+    ----------
+    obstacles : sequence of polygons, shapely (Multi)Polygon, GeoSeries
+        Convex or simple polygons (shapely polygons may have holes): (n, 2) array-likes of
+        int or float, or shapely geometries. A MultiPolygon is one obstacle.
+    robot : polygon, optional
+        Convex or simple polygon in its own frame; its reference point is the origin.
+        ``None``: the robot is a point.
+    workspace : (xmin, ymin, xmax, ymax) or polygon, optional
+        The region the *whole robot* must stay inside (the reference point stays in
+        ``workspace ⊖ robot``). ``None``: unbounded.
+    threads : int, default 1
+        Threads for building the visibility graph (the GIL is released).
+
+    Notes
+    -----
+    A path is valid iff no point of it lies in the open interior of a C-obstacle
+    ``O ⊕ (−R)`` (touching is allowed) and every point lies in ``workspace ⊖ robot``.
+    Obstacles with no area (points, segments) block a point robot nowhere.
+
+    Integer scenes (|x| < 2**62 after inflation) are planned in int64: bend points are
+    exact C-obstacle vertices. Float scenes use the correctly rounded C-obstacle vertices;
+    every decision on them is exact. Path lengths are floats: two paths whose lengths
+    differ only by rounding may be chosen either way.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> L = [(1, -2), (3, -2), (3, 2), (2, 2), (2, -1), (1, -1)]   # an L-shaped obstacle
+    >>> planner = mk.MotionPlanner([L], workspace=(-5, -5, 5, 5))
+    >>> planner.shortest_path((0, 0), (4, 0)).points.tolist()
+    [[0, 0], [2, 2], [3, 2], [4, 0]]
+    >>> planner.is_free([(0, 0), (1.5, -1.5), (2, 0)]).tolist()
+    [True, False, True]
+    """
+
+    def __init__(
+        self, obstacles: Any, robot: Any = None, *, workspace: Any = None, threads: int = 1
+    ) -> None:
+        self.threads = max(1, int(threads))
+        obs = self._read_obstacles(obstacles)
+        kinds = set()
+        opieces: list[list[np.ndarray]] = []
+        for k, o in enumerate(obs):
+            pcs, kind = _pieces(o, f"obstacles[{k}]")
+            opieces.append(pcs)
+            kinds.add(kind)
+        if robot is None:
+            rpieces, rkind = [np.zeros((1, 2), np.int64)], "int"
+        else:
+            rpieces, rkind = _pieces(robot, "robot")
+            kinds.add(rkind)
+        self._ws_kind = None
+        wpieces: list[np.ndarray] = []
+        box = None
+        if workspace is not None:
+            if _is_box(workspace):
+                vals = [_scalar(v, "workspace") for v in workspace]
+                kinds.add("float" if any(isinstance(v, float) for v in vals) else "int")
+                if not (vals[0] <= vals[2] and vals[1] <= vals[3]):
+                    raise ShapeError(
+                        "workspace: expected (xmin, ymin, xmax, ymax) with xmin <= xmax "
+                        "and ymin <= ymax",
+                        argument="workspace",
+                    )
+                box = vals
+            else:
+                wp, wkind = _pieces(workspace, "workspace")
+                kinds.add(wkind)
+                allw = np.concatenate(wp)
+                rect = self._rectangle(workspace, allw, len(wp))
+                if rect is not None:
+                    box = rect
+                else:
+                    wpieces = self._ring(workspace, allw, wkind)
+        kind = "float" if "float" in kinds else "int"
+        self.kind = kind
+        opieces = [_as_kind(p, kind, f"obstacles[{k}]") for k, p in enumerate(opieces)]
+        rpieces = _as_kind(rpieces, kind, "robot")
+        wpieces = _as_kind(wpieces, kind, "workspace")
+        self._obstacles = obs
+        self._robot_pieces = rpieces
+        self._obstacle_pieces = opieces
+        self.n_obstacles = len(obs)
+        neg = [np.ascontiguousarray(-r) for r in rpieces]
+        As, Bs, groups = [], [], []
+        for g, pcs in enumerate([*opieces, wpieces]):
+            for a in pcs:
+                for b in neg:
+                    As.append(a)
+                    Bs.append(b)
+                    groups.append(g)
+        from .batch import Ragged, minkowski_sum_many
+
+        if As:
+            sums = minkowski_sum_many(As, Bs)
+            coords = sums.coords
+            offs = sums.offsets
+        else:
+            coords = np.zeros((0, 2), np.int64 if kind == "int" else np.float64)
+            offs = np.zeros(1, np.int64)
+        if kind == "int":
+            if coords.dtype != np.int64 or (
+                coords.size and int(np.abs(coords).max()) >= _INT_LIMIT
+            ):
+                raise ShapeError(
+                    "obstacles: C-obstacle coordinates reach 2**62",
+                    argument="obstacles",
+                    hint="scale the scene down",
+                )
+        coords = np.ascontiguousarray(coords, np.int64 if kind == "int" else np.float64)
+        self.pieces = Ragged(coords, offs)
+        self.groups = np.asarray(groups, dtype=np.int64)
+        # the reference point's box
+        rall = np.concatenate(rpieces)
+        if box is not None:
+            rb = [rall[:, 0].min(), rall[:, 1].min(), rall[:, 0].max(), rall[:, 1].max()]
+            box = [box[0] - rb[0], box[1] - rb[1], box[2] - rb[2], box[3] - rb[3]]
+            box = [int(v) if kind == "int" else float(v) for v in box]
+        elif self._frame is not None:
+            rb = [rall[:, 0].min(), rall[:, 1].min(), rall[:, 0].max(), rall[:, 1].max()]
+            f = self._frame
+            box = [f[0] - rb[0], f[1] - rb[1], f[2] - rb[2], f[3] - rb[3]]
+            box = [int(v) if kind == "int" else float(v) for v in box]
+        self.box = box
+        self._core = self._make_core(kind)
+        self._twin: Any = None
+
+    _frame: Any = None
+
+    @classmethod
+    def from_scene(cls, scene: Any, name: str = "scene") -> MotionPlanner:
+        """A planner from a scene mapping (the CLI's scene file, parsed).
+
+        Two layouts are accepted:
+
+        * ``{"obstacles": [...], "robot": ..., "workspace": ...}``: each obstacle (and the
+          robot, and a polygon workspace) is a list of ``[x, y]`` pairs or a GeoJSON
+          geometry object; ``robot`` missing or null is a point; ``workspace`` missing or
+          null is unbounded, ``[xmin, ymin, xmax, ymax]`` is a box.
+        * a GeoJSON FeatureCollection whose features carry ``"role"`` in their properties:
+          ``"obstacle"`` (the default), ``"robot"`` or ``"workspace"``.
+
+        JSON integers stay integers (exact int planning); any float makes a float scene.
+
+        Examples
+        --------
+        >>> scene = {"robot": [[-1, -1], [1, -1], [1, 1], [-1, 1]],
+        ...          "obstacles": [[[2, -1], [4, -1], [4, 3], [2, 3]]],
+        ...          "workspace": [-10, -10, 10, 10]}
+        >>> MotionPlanner.from_scene(scene).shortest_path((0, 0), (6, 0)).points.tolist()
+        [[0, 0], [1, -2], [5, -2], [6, 0]]
+        """
+
+        def geom(obj: Any, what: str) -> Any:
+            if obj is None:
+                return None
+            if isinstance(obj, dict):
+                import shapely.geometry
+
+                try:
+                    return shapely.geometry.shape(obj)
+                except Exception as exc:  # noqa: BLE001 - foreign errors become ours
+                    raise ShapeError(
+                        f"{name}: {what} is not a GeoJSON geometry ({exc})", argument=name
+                    ) from None
+            return obj
+
+        if not isinstance(scene, dict):
+            raise ShapeError(f"{name}: a scene must be a JSON object", argument=name)
+        if scene.get("type") == "FeatureCollection":
+            obstacles, robot, workspace = [], None, None
+            for k, feat in enumerate(scene.get("features", [])):
+                role = (feat.get("properties") or {}).get("role", "obstacle")
+                g = geom(feat.get("geometry"), f"features[{k}]")
+                if role == "robot":
+                    robot = g
+                elif role == "workspace":
+                    workspace = g
+                elif role == "obstacle":
+                    obstacles.append(g)
+                else:
+                    raise ShapeError(
+                        f"{name}: features[{k}] has an unknown role {role!r}",
+                        argument=name,
+                        hint="use obstacle, robot or workspace",
+                    )
+        else:
+            unknown = set(scene) - {"obstacles", "robot", "workspace"}
+            if unknown:
+                raise ShapeError(
+                    f"{name}: unknown scene keys {sorted(unknown)}",
+                    argument=name,
+                    hint="a scene has obstacles, robot and workspace",
+                )
+            obs = scene.get("obstacles", [])
+            if not isinstance(obs, list):
+                raise ShapeError(f"{name}: obstacles must be a list", argument=name)
+            obstacles = [geom(o, f"obstacles[{k}]") for k, o in enumerate(obs)]
+            robot = geom(scene.get("robot"), "robot")
+            workspace = geom(scene.get("workspace"), "workspace")
+        return cls(obstacles, robot, workspace=workspace)
+
+    # ------------------------------------------------------------------ construction
+    @staticmethod
+    def _read_obstacles(obstacles: Any) -> list:
+        if obstacles is None:
+            return []
+        if _is_shapely(obstacles):
+            if obstacles.geom_type in ("MultiPolygon", "GeometryCollection"):
+                return list(obstacles.geoms)
+            return [obstacles]
+        if hasattr(obstacles, "geometry") and hasattr(obstacles, "values"):  # GeoSeries/-Frame
+            obstacles = obstacles.geometry
+            return [g for g in obstacles.values if g is not None and not g.is_empty]
+        if isinstance(obstacles, np.ndarray) and obstacles.dtype != object:
+            if obstacles.ndim == 3:
+                return list(obstacles)
+            raise ShapeError(
+                "obstacles: expected a sequence of polygons",
+                argument="obstacles",
+                hint="wrap a single polygon in a list: [polygon]",
+            )
+        obs = list(obstacles)
+        if obs and isinstance(obs[0], (tuple, list)) and len(obs[0]) == 2:
+            first = obs[0]
+            if all(isinstance(v, (int, float, np.number, Fraction)) for v in first):
+                raise ShapeError(
+                    "obstacles: expected a sequence of polygons, got a sequence of points",
+                    argument="obstacles",
+                    hint="wrap a single polygon in a list: [polygon]",
+                )
+        return obs
+
+    @staticmethod
+    def _rectangle(workspace: Any, allw: np.ndarray, npieces: int) -> list | None:
+        if npieces != 1:
+            return None
+        if len(allw) != 4:
+            return None
+        xs = sorted(set(allw[:, 0].tolist()))
+        ys = sorted(set(allw[:, 1].tolist()))
+        if len(xs) != 2 or len(ys) != 2:
+            return None
+        return [xs[0], ys[0], xs[1], ys[1]]
+
+    def _ring(self, workspace: Any, allw: np.ndarray, wkind: str) -> list[np.ndarray]:
+        """Convex pieces of (frame minus workspace): the workspace's outside as one
+        obstacle group, inside a frame box strictly around it."""
+        import shapely
+
+        x0, y0 = allw[:, 0].min(), allw[:, 1].min()
+        x1, y1 = allw[:, 0].max(), allw[:, 1].max()
+        m = max(x1 - x0, y1 - y0, 1)
+        if wkind == "int":
+            m = int(m)
+            f = [int(x0) - m, int(y0) - m, int(x1) + m, int(y1) + m]
+        else:
+            m = float(m)
+            f = [float(x0) - m, float(y0) - m, float(x1) + m, float(y1) + m]
+        self._frame = f
+        if _is_shapely(workspace):
+            inner = workspace
+        else:
+            inner = shapely.Polygon(_ring_coords(workspace))
+        if not inner.is_valid:
+            raise SelfIntersectionError(
+                f"workspace: not a simple polygon ({shapely.is_valid_reason(inner)})",
+                argument="workspace",
+            )
+        holes = [inner.exterior] if inner.geom_type == "Polygon" else []
+        frame = shapely.Polygon(
+            [(f[0], f[1]), (f[2], f[1]), (f[2], f[3]), (f[0], f[3])],
+            holes=holes,
+        )
+        pieces = _triangulate(frame, "workspace")
+        if inner.geom_type == "Polygon":
+            # holes of the workspace are obstacles too
+            for h in inner.interiors:
+                pieces += _triangulate(shapely.Polygon(h), "workspace")
+        if wkind == "int":
+            pieces = [p.astype(np.int64) for p in pieces]
+        return pieces
+
+    def _make_core(self, kind: str) -> Any:
+        coords = self.pieces.coords
+        offs = self.pieces.offsets
+        n = np.diff(offs)
+        solid = n >= 3
+        keep = np.repeat(solid, n)
+        c = np.ascontiguousarray(coords[keep], np.int64 if kind == "int" else np.float64)
+        o = np.concatenate([[0], np.cumsum(n[solid])]).astype(np.int64)
+        g = np.ascontiguousarray(self.groups[solid], np.int64)
+        dt = np.int64 if kind == "int" else np.float64
+        box = np.asarray(self.box if self.box is not None else [], dtype=dt)
+        core = (_ext.PlannerI if kind == "int" else _ext.PlannerF)()
+        core.build(c, o, g, np.ascontiguousarray(box), self.threads)
+        return core
+
+    def _float_twin(self) -> Any:
+        """The same planner on float64 coordinates (for float queries on an int scene)."""
+        if self._twin is None:
+            if self.pieces.coords.size and int(np.abs(self.pieces.coords).max()) > _F53:
+                raise ShapeError(
+                    "start: float queries on an int scene need |x| <= 2**53",
+                    argument="start",
+                    hint="pass int coordinates",
+                )
+            if self.box is not None and max(abs(v) for v in self.box) > _F53:
+                raise ShapeError("start: the workspace needs |x| <= 2**53 for float queries")
+            twin = object.__new__(MotionPlanner)
+            twin.__dict__.update(self.__dict__)
+            twin.pieces = type(self.pieces)(
+                self.pieces.coords.astype(np.float64), self.pieces.offsets
+            )
+            twin.box = None if self.box is None else [float(v) for v in self.box]
+            twin.kind = "float"
+            twin._core = twin._make_core("float")
+            self._twin = twin
+        return self._twin
+
+    # ------------------------------------------------------------------ naming
+    def _group_name(self, g: int) -> str:
+        return f"obstacles[{g}]" if g < self.n_obstacles else "workspace"
+
+    def _point_error(self, which: str, p: tuple, grp: int) -> GeometryError:
+        where = f"({_fmt(p[0])}, {_fmt(p[1])})"
+        if grp == -2 or grp == self.n_obstacles:
+            e = GeometryError(
+                f"{which}: {where} is outside the workspace (the robot does not fit there)",
+                argument=which,
+                hint="move it inside workspace ⊖ robot",
+            )
+            e.obstacle = None  # type: ignore[attr-defined]
+            return e
+        name = self._group_name(grp)
+        e = GeometryError(
+            f"{which}: {where} is in collision with {name} (inside its C-obstacle)",
+            argument=which,
+            hint="move it out of the C-obstacle; touching is allowed",
+        )
+        e.obstacle = grp  # type: ignore[attr-defined]
+        return e
+
+    # ------------------------------------------------------------------ queries
+    def _route(self, pts: list[tuple]) -> tuple[Any, str]:
+        """The core that takes these points exactly, and the output kind."""
+        floats = any(isinstance(v, float) for p in pts for v in p)
+        if self.kind == "int" and not floats:
+            if any(abs(v) >= _INT_LIMIT for p in pts for v in p):
+                raise ShapeError(
+                    "start: query coordinates must satisfy |x| < 2**62",
+                    argument="start",
+                )
+            return self, "int"
+        if self.kind == "int":
+            if any(isinstance(v, int) and abs(v) > _F53 for p in pts for v in p):
+                raise ShapeError("start: ints beyond 2**53 next to floats", argument="start")
+            return self._float_twin(), "float"
+        if any(isinstance(v, int) and abs(v) > _F53 for p in pts for v in p):
+            raise ShapeError(
+                "start: ints beyond 2**53 in a float scene cannot be converted exactly",
+                argument="start",
+            )
+        return self, "float"
+
+    def shortest_path(self, start: Any, goal: Any) -> Path:
+        """The shortest valid path of the reference point from ``start`` to ``goal``.
+
+        Parameters
+        ----------
+        start, goal : (x, y)
+            Reference-point positions (ints, floats, or shapely Points).
+
+        Returns
+        -------
+        Path
+            ``points`` (k, 2): start first, goal last; bend points are C-obstacle vertices
+            (exact ints for an int scene and int query); ``length``.
+
+        Raises
+        ------
+        GeometryError
+            The start or the goal is in collision (inside a C-obstacle's open interior, the
+            message and the ``obstacle`` attribute say which) or outside the workspace.
+        NoPathError
+            The goal cannot be reached from the start.
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> walls = [[(-1, 1), (3, 1), (3, 2), (-1, 2)], [(-1, -1), (3, -1), (3, 1), (-1, 1)]]
+        >>> mk.MotionPlanner(walls).shortest_path((-2, 1), (4, 1)).points.tolist()
+        [[-2, 1], [4, 1]]
+        """
+        s = _point(start, "start")
+        g = _point(goal, "goal")
+        pl, out = self._route([s, g])
+        dt = np.int64 if out == "int" else np.float64
+        st, grp, pts = pl._core.query(dt(s[0]), dt(s[1]), dt(g[0]), dt(g[1]))
+        if st == 1:
+            raise self._point_error("start", s, grp)
+        if st == 2:
+            raise self._point_error("goal", g, grp)
+        if st == 3:
+            raise NoPathError(
+                f"goal: ({_fmt(g[0])}, {_fmt(g[1])}) cannot be reached from "
+                f"({_fmt(s[0])}, {_fmt(s[1])})",
+                argument="goal",
+                hint="the free space between them is not connected",
+            )
+        return Path(pts)
+
+    def shortest_paths(self, starts: Any, goals: Any) -> list[Path | None]:
+        """Many queries in one call: ``starts[i]`` to ``goals[i]``.
+
+        Either argument may be a single point (used for every query). Returns a list of
+        :class:`Path`, with ``None`` where the goal is unreachable; a start or goal in
+        collision raises (the error names ``starts[i]`` or ``goals[i]``).
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> pl = mk.MotionPlanner([[(1, -1), (2, -1), (2, 1), (1, 1)]])
+        >>> [p.points.tolist() for p in pl.shortest_paths([(0, 0), (0, 5)], (3, 0))]
+        [[[0, 0], [1, -1], [2, -1], [3, 0]], [[0, 5], [3, 0]]]
+        """
+        S = self._points(starts, "starts")
+        G = self._points(goals, "goals")
+        if len(S) == 1 and len(G) != 1:
+            S = S * len(G)
+        if len(G) == 1 and len(S) != 1:
+            G = G * len(S)
+        if len(S) != len(G):
+            raise ShapeError(f"goals: {len(G)} goals for {len(S)} starts", argument="goals")
+        if not S:
+            return []
+        pl, out = self._route(S + G)
+        dt = np.int64 if out == "int" else np.float64
+        st, grp, pts, off = pl._core.query_many(
+            np.ascontiguousarray(np.array(S, dtype=dt).reshape(-1, 2)),
+            np.ascontiguousarray(np.array(G, dtype=dt).reshape(-1, 2)),
+        )
+        res: list[Path | None] = []
+        for i in range(len(S)):
+            if st[i] == 1:
+                raise self._point_error(f"starts[{i}]", S[i], int(grp[i]))
+            if st[i] == 2:
+                raise self._point_error(f"goals[{i}]", G[i], int(grp[i]))
+            res.append(None if st[i] == 3 else Path(pts[off[i] : off[i + 1]]))
+        return res
+
+    @staticmethod
+    def _points(points: Any, name: str) -> list[tuple]:
+        if _is_shapely(points):
+            return [_point(points, name)]
+        arr = points
+        if isinstance(arr, np.ndarray):
+            if arr.ndim == 1:
+                return [_point(arr.tolist(), name)]
+            return [_point(r, f"{name}[{i}]") for i, r in enumerate(arr.tolist())]
+        seq = list(arr)
+        if len(seq) == 2 and not hasattr(seq[0], "__len__") and not _is_shapely(seq[0]):
+            return [_point(seq, name)]
+        return [_point(r, f"{name}[{i}]") for i, r in enumerate(seq)]
+
+    def is_free(self, points: Any) -> np.ndarray:
+        """May the reference point be at each point? (closed free space: touching counts
+        as free). Returns an (n,) bool array (n = 1 for a single point).
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> pl = mk.MotionPlanner([[(0, 0), (2, 0), (2, 2), (0, 2)]])
+        >>> pl.is_free([(1, 1), (2, 1), (3, 1)]).tolist()
+        [False, True, True]
+        """
+        pts = self._points(points, "points")
+        if not pts:
+            return np.zeros(0, bool)
+        pl, out = self._route(pts)
+        dt = np.int64 if out == "int" else np.float64
+        loc = pl._core.locate(np.ascontiguousarray(np.array(pts, dtype=dt).reshape(-1, 2)))
+        return loc == -1
+
+    def locate(self, points: Any) -> np.ndarray:
+        """Per point: -1 free, ``k`` inside the C-obstacle of ``obstacles[k]``
+        (``n_obstacles`` for the workspace's outside), -2 outside the workspace box.
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> mk.MotionPlanner([[(0, 0), (2, 0), (2, 2), (0, 2)]]).locate([(1, 1), (3, 3)]).tolist()
+        [0, -1]
+        """
+        pts = self._points(points, "points")
+        pl, out = self._route(pts)
+        dt = np.int64 if out == "int" else np.float64
+        loc = pl._core.locate(np.ascontiguousarray(np.array(pts, dtype=dt).reshape(-1, 2)))
+        return np.asarray(loc, dtype=np.int64)
+
+    # ------------------------------------------------------------------ geometry
+    @property
+    def cspace_obstacles(self) -> list:
+        """One shapely geometry per obstacle: its C-obstacle ``O ⊕ (−R)`` (the union of
+        its pieces; display only: the planner never unions)."""
+        import shapely
+
+        polys = self._piece_geoms()
+        out = []
+        for g in range(self.n_obstacles):
+            sel = [p for p, gg in zip(polys, self.groups.tolist()) if gg == g]
+            out.append(shapely.union_all(sel) if sel else shapely.Polygon())
+        return out
+
+    def _piece_geoms(self) -> list:
+        import shapely
+
+        res = []
+        for p in self.pieces:
+            q = np.asarray(p, dtype=np.float64)
+            if len(q) >= 3:
+                res.append(shapely.Polygon(q))
+            elif len(q) == 2:
+                res.append(shapely.LineString(q))
+            else:
+                res.append(shapely.Point(q[0]))
+        return res
+
+    @property
+    def free_space(self) -> Any:
+        """The closed free configuration space as a shapely geometry (display only; GEOS
+        regularizes, so zero-width passages are not shown). Without a workspace it is
+        clipped to a box around the C-obstacles."""
+        import shapely
+
+        polys = [p for p in self._piece_geoms() if p.geom_type == "Polygon"]
+        if self.box is not None:
+            b = [float(v) for v in self.box]
+        else:
+            allc = self.pieces.coords.astype(np.float64)
+            if len(allc) == 0:
+                allc = np.zeros((1, 2))
+            lo, hi = allc.min(axis=0), allc.max(axis=0)
+            m = max(float((hi - lo).max()) * 0.1, 1.0)
+            b = [lo[0] - m, lo[1] - m, hi[0] + m, hi[1] + m]
+        region = shapely.box(*b)
+        if not polys:
+            return region
+        return region.difference(shapely.union_all(polys))
+
+    @property
+    def obstacles(self) -> list:
+        """The obstacles as shapely geometries (for display)."""
+        import shapely
+
+        res = []
+        for pcs in self._obstacle_pieces:
+            geoms = []
+            for p in pcs:
+                q = p.astype(np.float64)
+                geoms.append(
+                    shapely.Polygon(q)
+                    if len(q) >= 3
+                    else (shapely.LineString(q) if len(q) == 2 else shapely.Point(q[0]))
+                )
+            res.append(shapely.union_all(geoms))
+        return res
+
+    def plot(self, ax: Any = None, path: Path | None = None) -> Any:
+        """Draw the obstacles, the C-obstacles and optionally a path with matplotlib
+        (imported only here); returns the axes.
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> ax = mk.MotionPlanner([[(0, 0), (1, 0), (0, 1)]]).plot()  # doctest: +SKIP
+        """
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots()
+        ax.set_aspect("equal")
+        for geom, style in (
+            (self.cspace_obstacles, {"fc": "#f4b6b6", "ec": "#c44", "alpha": 0.6}),
+            (self.obstacles, {"fc": "#777", "ec": "#333", "alpha": 0.9}),
+        ):
+            for g in geom:
+                for poly in getattr(g, "geoms", [g]):
+                    if poly.geom_type == "Polygon" and not poly.is_empty:
+                        x, y = poly.exterior.xy
+                        ax.fill(x, y, **style)
+        if self.box is not None:
+            b = [float(v) for v in self.box]
+            ax.plot([b[0], b[2], b[2], b[0], b[0]], [b[1], b[1], b[3], b[3], b[1]], "k--", lw=1)
+        if path is not None:
+            path.plot(ax)
+        return ax
+
+    def __repr__(self) -> str:
+        return (
+            f"MotionPlanner({self.n_obstacles} obstacles, {len(self.pieces)} C-pieces, "
+            f"{len(self._core.candidates())} bend candidates, kind={self.kind!r})"
+        )
+
+
+def _ring_coords(workspace: Any) -> np.ndarray:
+    data, _, path = D.one(workspace, "workspace")
+    if path == "py":
+        raise ShapeError("workspace: coordinates must be int64 or float64", argument="workspace")
+    return np.asarray(data, dtype=np.float64)
