@@ -9,7 +9,11 @@
 #include <Python.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <memory>
+#include <new>
+
+#include <sys/mman.h>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -30,21 +34,39 @@ using In1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 template <class T>
 using Out = nb::ndarray<nb::numpy, T>;
 
-// A new numpy array owning `data` (allocated with new[]).
+// Memory handed to numpy: malloc'd, and for large blocks 2 MiB-aligned with
+// madvise(MADV_HUGEPAGE), as numpy's own allocator does. On this kind of kernel
+// (transparent huge pages in "madvise" mode) fresh 4 KiB pages cost a fault each, and
+// faults of one process serialize on its memory-map lock: with huge pages a 160 MB
+// result takes 80 faults instead of 40,000, and threads stop queueing on them.
+inline void* big_malloc(std::size_t bytes) {
+  constexpr std::size_t HUGE = std::size_t(1) << 21;
+  if (bytes < (std::size_t(4) << 20)) return std::malloc(bytes > 0 ? bytes : 1);
+  std::size_t rounded = (bytes + HUGE - 1) & ~(HUGE - 1);
+  void* p = std::aligned_alloc(HUGE, rounded);
+#ifdef MADV_HUGEPAGE
+  if (p) madvise(p, rounded, MADV_HUGEPAGE);
+#endif
+  return p;
+}
+
+template <class T>
+T* alloc(std::size_t n) {
+  void* p = big_malloc(sizeof(T) * (n > 0 ? n : 1));
+  if (!p) throw std::bad_alloc();
+  return static_cast<T*>(p);
+}
+
+// A new numpy array owning `data` (from alloc<T>).
 template <class T>
 Out<T> owned(T* data, std::size_t rows, std::size_t cols) {
-  nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<T*>(p); });
+  nb::capsule owner(data, [](void* p) noexcept { std::free(p); });
   if (cols == 0) {
     std::size_t shape[1] = {rows};
     return Out<T>(data, 1, shape, owner);
   }
   std::size_t shape[2] = {rows, cols};
   return Out<T>(data, 2, shape, owner);
-}
-
-template <class T>
-T* alloc(std::size_t n) {
-  return new T[n > 0 ? n : 1];
 }
 
 // Uninitialized scratch (std::vector would zero it: for 2^20 vertices that memset costs
@@ -227,7 +249,7 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
     int nt = std::max(1, std::min<int>(threads, (int)std::max<i64>(1, P / 64)));
     struct Chunk {
       i64 q0 = 0, q1 = 0;
-      std::unique_ptr<T[]> buf;
+      T* buf = nullptr;
       i64 used = 0;
       i64 fail = -1;
       int code = 0, which = 0;
@@ -244,10 +266,10 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
         big = std::max(big, std::max(la, lb));
         cap += std::max<i64>(la + lb, 1);
       }
-      c.buf.reset(new T[2 * (std::size_t)std::max<i64>(cap, 1)]);
+      c.buf = alloc<T>(2 * (std::size_t)std::max<i64>(cap, 1));
       Buf<i64> keep(big), ia(big), ib(big);
       Buf<std::int8_t> turn(big);
-      T* out = c.buf.get();
+      T* out = c.buf;
       i64 o = 0;
       for (i64 q = c.q0; q < c.q1; ++q) {
         mk::Norm a = mk::normalize(pa, alo[q], ahi[q], keep.data(), turn.data(), ia.data());
@@ -293,10 +315,12 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
       coords = alloc<T>(2 * (std::size_t)total);
       parallel([&](int t) {
         Chunk& c = ch[t];
-        if (c.used) std::memcpy(coords + 2 * off[c.q0], c.buf.get(), sizeof(T) * 2 * c.used);
-        c.buf.reset();
+        if (c.used) std::memcpy(coords + 2 * off[c.q0], c.buf, sizeof(T) * 2 * c.used);
+        std::free(c.buf);
+        c.buf = nullptr;
       });
     }
+    for (auto& c : ch) std::free(c.buf);  // the error path (null otherwise)
   }
   if (code != mk::OK) {
     coords = alloc<T>(0);
@@ -407,7 +431,7 @@ nb::tuple sum_lists(nb::handle a, nb::handle b) {
   double* out = alloc<double>(2 * (std::size_t)(na + nb_));
   i64 k = mk::merge(pa, A, pb, B, out);
   if (k < 0) {
-    delete[] out;
+    std::free(out);
     return nb::make_tuple(nb::none(), (int)mk::OVERFLOW, 2, 0, kind);
   }
   return nb::make_tuple(owned(out, (std::size_t)k, 2), (int)mk::OK, 0, 0, kind);
