@@ -60,27 +60,37 @@ inline bool finite_coord(T v) {
 template <class T>
 inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
   i64 n = hi - lo;
-  if constexpr (std::is_floating_point_v<T>) {
-    // non-finite <=> all exponent bits set; an integer max over the exponent fields
-    // vectorizes (a floating-point sum would be one long dependency chain)
-    constexpr u64 EXP = 0x7ff0000000000000ull;
-    u64 mx = 0;
-    const double* q = p + 2 * lo;
-    for (i64 t = 0; t < 2 * (hi - lo); ++t) {
-      u64 bits;
-      std::memcpy(&bits, q + t, sizeof bits);
-      bits &= EXP;
-      mx = bits > mx ? bits : mx;
+  // doubles: non-finite <=> all exponent bits set. The max over the exponent fields is
+  // taken in the turn pass below (one pass over the data), or here for n < 3; the
+  // verdicts of that pass are only used once every coordinate is known to be finite.
+  constexpr u64 EXP = 0x7ff0000000000000ull;
+  u64 mx = 0;
+  auto expmax = [&](i64 i) {
+    if constexpr (std::is_floating_point_v<T>) {
+      u64 bx, by;
+      std::memcpy(&bx, p + 2 * i, sizeof bx);
+      std::memcpy(&by, p + 2 * i + 1, sizeof by);
+      bx &= EXP;
+      by &= EXP;
+      bx = bx > by ? bx : by;
+      mx = bx > mx ? bx : mx;
+    } else {
+      (void)i;
     }
-    *maxexp = mx;
-    if (mx == EXP) {
-      for (i64 i = lo; i < hi; ++i)
-        if (!(p[2 * i] - p[2 * i] == 0.0 && p[2 * i + 1] - p[2 * i + 1] == 0.0)) {
-          *bad = i - lo;
-          return 2;
-        }
+  };
+  auto finite_or_bad = [&]() -> bool {
+    if constexpr (std::is_floating_point_v<T>) {
+      *maxexp = mx;
+      if (mx == EXP) {
+        for (i64 i = lo; i < hi; ++i)
+          if (!(p[2 * i] - p[2 * i] == 0.0 && p[2 * i + 1] - p[2 * i + 1] == 0.0)) {
+            *bad = i - lo;
+            return false;
+          }
+      }
     }
-  }
+    return true;
+  };
   if constexpr (!std::is_floating_point_v<T>) {
     // the __int128 cross products need |x| < 2^62 (one fused pass; RANGE -> exact path)
     u64 acc = 0;
@@ -97,7 +107,10 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
         }
     }
   }
-  if (n < 3) return 0;
+  if (n < 3) {
+    for (i64 i = lo; i < hi; ++i) expmax(i);
+    return finite_or_bad() ? 0 : 2;
+  }
   i64 pos = 0, neg = 0, trans = 0;
   // the turn at vertex i, from the edges h -> i -> k (branch-free; the middle loop has
   // no wrap-around, so the compiler can vectorize it)
@@ -117,10 +130,12 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
     bool up1 = (uy > 0) | ((uy == 0) & (ux > 0));
     bool up2 = (vy > 0) | ((vy == 0) & (vx > 0));
     trans += up1 & !up2;
+    expmax(i);
   };
   turn_at(hi - 1, lo, lo + 1);
   for (i64 i = lo + 1; i < hi - 1; ++i) turn_at(i - 1, i, i + 1);
   turn_at(hi - 2, hi - 1, lo);
+  if (!finite_or_bad()) return 2;
   if (trans != 1) return 0;
   if (pos == n) return 1;
   if (neg == n) return -1;
