@@ -80,6 +80,9 @@ def normalize_list(pts: list, name: str) -> tuple[list, list, int]:
         x, y = q[t]
         if y < by or (y == by and x < bx):
             b, bx, by = t, x, y
+    # the far end of a segment: the first top-most vertex in input order (as the core)
+    top0 = max(range(m), key=lambda t: (q[t][1], q[t][0]))
+    top_pt, top_idx = q[top0], idx[top0]
     if b:
         q = q[b:] + q[:b]
         idx = idx[b:] + idx[:b]
@@ -98,8 +101,7 @@ def normalize_list(pts: list, name: str) -> tuple[list, list, int]:
                 raise not_convex(name, TURNS_BOTH_WAYS, idx[t])
         prv = cur
     if not s:
-        top = max(range(m), key=lambda t: (q[t][1], q[t][0]))
-        return [q[0], q[top]], [idx[0], idx[top]], 1
+        return [q[0], top_pt], [idx[0], top_idx], 1
     if s < 0:
         q = q[:1] + q[:0:-1]
         idx = idx[:1] + idx[:0:-1]

@@ -37,6 +37,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from . import _exact
 from ._coerce import INT, as_array
 from ._containers import apply, boxed
 from ._core import _ext
@@ -115,20 +116,8 @@ class Penetration(NamedTuple):
     point_b: np.ndarray
 
 
-_HULL_HINT = "pass hull=True to use the convex hull"
-_WHY = {
-    _ext.TURNS_BOTH_WAYS: "the boundary turns the other way at vertex {v}",
-    _ext.SPIKE: "the boundary doubles back on itself at vertex {v}",
-    _ext.WINDS_TWICE: "the edges wind around more than once (a star polygon?), "
-    "detected at vertex {v}",
-}
-
-
 def _not_convex(name: str, code: int, vertex: int) -> NotConvexError:
-    why = _WHY.get(code, "detected at vertex {v}").format(v=vertex)
-    return NotConvexError(
-        f"{name}: not convex: {why} ({_HULL_HINT})", vertex, argument=name, hint=_HULL_HINT
-    )
+    return _exact.not_convex(name, code, vertex)
 
 
 # --------------------------------------------------------------------------------------
@@ -595,7 +584,7 @@ def _exact_normalize(pts: list, name: str) -> tuple[list, int]:
     translation and a positive scaling keep: the points become integer offsets from the
     first one in units of the common denominator. Those fit the core's int64 path
     (|x| < 2**62) unless the polygon's extent is beyond it; then the exact Python twin
-    of the core's algorithm (:func:`_exact_normalize_py`) decides."""
+    of the core's algorithm (:func:`minkowski2d._exact.normalize_list`) decides."""
     den = 1
     for p in pts:
         for v in p:
@@ -609,60 +598,8 @@ def _exact_normalize(pts: list, name: str) -> tuple[list, int]:
         if code:
             raise _not_convex(name, int(code), int(v))
         return idx.tolist(), int(split)
-    return _exact_normalize_py(rel, name)
-
-
-def _exact_normalize_py(p: list, name: str) -> tuple[list, int]:
-    """mk::normalize's general pass (convex.hpp) in exact Python ints."""
-
-    def orient(i: int, j: int, k: int) -> int:
-        return _sg(_cr(_sub(p[j], p[i]), _sub(p[k], p[i])))
-
-    def low(i: int) -> tuple:
-        return (p[i][1], p[i][0])
-
-    keep: list[int] = []
-    for i in range(len(p)):
-        if not keep or p[i] != p[keep[-1]]:
-            keep.append(i)
-    while len(keep) > 1 and p[keep[-1]] == p[keep[0]]:
-        keep.pop()
-    m = len(keep)
-    if m == 1:
-        return keep, 1
-    b = min(range(m), key=lambda t: low(keep[t]))
-    turn = []
-    sg = 0
-    for t in range(m):
-        prv, cur, nxt = keep[(b + t - 1) % m], keep[(b + t) % m], keep[(b + t + 1) % m]
-        o = orient(prv, cur, nxt)
-        turn.append(o)
-        if o and sg and o != sg:
-            raise _not_convex(name, _ext.TURNS_BOTH_WAYS, cur)
-        sg = sg or o
-    if sg == 0:
-        return [keep[b], max(keep, key=low)], 1
-    out = []
-    for t in range(m):
-        tt = t if sg > 0 else (m - t) % m
-        cur = keep[(b + tt) % m]
-        if turn[tt] == 0:
-            prv, nxt = keep[(b + tt - 1) % m], keep[(b + tt + 1) % m]
-            if any(_sg(p[cur][c] - p[prv][c]) != _sg(p[nxt][c] - p[cur][c]) for c in (0, 1)):
-                raise _not_convex(name, _ext.SPIKE, cur)
-            continue
-        out.append(cur)
-    k = len(out)
-    split = k
-    for t in range(k):
-        i, j = out[t], out[(t + 1) % k]
-        up = low(j) > low(i)
-        if split == k:
-            if not up:
-                split = t
-        elif up:
-            raise _not_convex(name, _ext.WINDS_TWICE, i)
-    return out, split
+    _, idx, split = _exact.normalize_list(rel, name)  # the core's twin in Python ints
+    return idx, split
 
 
 def _py_subedges(A: list, sa: int, B: list, sb: int) -> list:
