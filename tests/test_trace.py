@@ -231,3 +231,11 @@ def test_parallel_edges_scaled_copies(a, s, dx, dy):
     t = _check(a, b)
     if len(t.a) > 1:
         assert all(st_.source == "AB" for st_ in t.steps)
+
+
+def test_to_dict_beyond_float_range_is_a_geometry_error():
+    t = mk.merge_trace([(0, 0), (10**400, 0), (0, 1)], [(0, 0), (1, 1)])
+    assert t.result.dtype == object  # the trace itself stays exact
+    with pytest.raises(mk.errors.OverflowGeometryError) as ei:
+        t.to_dict()
+    assert ei.value.argument == "trace" and ei.value.hint

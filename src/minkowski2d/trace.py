@@ -32,8 +32,16 @@ from . import _dispatch as D
 from . import _exact
 from ._core import _ext
 from ._types import ArrayLike2, Polygon
+from .errors import OverflowGeometryError
 
-__all__ = ["MergeStep", "MergeTrace", "merge_trace", "format_number", "format_point"]
+__all__ = [
+    "MergeStep",
+    "MergeTrace",
+    "merge_trace",
+    "format_number",
+    "format_point",
+    "json_point",
+]
 
 _JS_SAFE = 1 << 53
 
@@ -77,14 +85,38 @@ def format_point(p: Point) -> str:
 def _json_number(v: Any) -> int | float:
     if isinstance(v, float):
         return 0.0 if v == 0.0 else v
-    if isinstance(v, Fraction):
-        return v.numerator if v.denominator == 1 and abs(v) <= _JS_SAFE else float(v)
-    v = int(v)
-    return v if -_JS_SAFE <= v <= _JS_SAFE else float(v)
+    try:
+        if isinstance(v, Fraction):
+            return v.numerator if v.denominator == 1 and abs(v) <= _JS_SAFE else float(v)
+        v = int(v)
+        return v if -_JS_SAFE <= v <= _JS_SAFE else float(v)
+    except OverflowError:
+        raise OverflowGeometryError(
+            "a coordinate is beyond float64, so it cannot be drawn (JSON numbers are floats)",
+            argument="trace",
+            hint="scale the polygons down; the exact values are in the *_text fields",
+        ) from None
 
 
-def _json_point(p: Point) -> list:
+def json_point(p: Point) -> list:
+    """A point as JSON numbers, for drawing: ints within 2**53 stay ints, everything
+    else is the nearest float.
+
+    Raises
+    ------
+    OverflowGeometryError
+        A coordinate beyond float64.
+
+    Examples
+    --------
+    >>> from fractions import Fraction
+    >>> json_point((3, Fraction(1, 4)))
+    [3, 0.25]
+    """
     return [_json_number(p[0]), _json_number(p[1])]
+
+
+_json_point = json_point
 
 
 # --------------------------------------------------------------------------------------

@@ -20,7 +20,8 @@ from typing import Any
 from .._types import ArrayLike2
 from ..convex import cspace_obstacle, normalize, reflect, translate
 from ..errors import GeometryError, OverflowGeometryError, ShapeError
-from ..trace import _json_point, format_point, merge_trace
+from ..trace import format_point, merge_trace
+from ..trace import json_point as _json_point
 
 __all__ = [
     "SEED_A",
