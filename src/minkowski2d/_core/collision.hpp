@@ -157,6 +157,19 @@ struct PrepResult {
   i64 q, v;
 };
 
+// The implicit rotation of a normalized polygon (step != 0: all n vertices, from b, in
+// direction step) as explicit indices: what r.at(t) gives, in two straight runs.
+inline void write_rotation(const Norm& r, i64* out) {
+  i64 k = 0;
+  if (r.step > 0) {
+    for (i64 v = r.b; v < r.lo + r.n; ++v) out[k++] = v;
+    for (i64 v = r.lo; v < r.b; ++v) out[k++] = v;
+  } else {
+    for (i64 v = r.b; v >= r.lo; --v) out[k++] = v;
+    for (i64 v = r.lo + r.n - 1; v > r.b; --v) out[k++] = v;
+  }
+}
+
 // Normalize polygons q0 <= q < q1 of p (see prep(), which checked the range); returns
 // the first failure.
 inline PrepResult prep_range(const double* p, const i64* off, i64 q0, i64 q1, int mode,
@@ -171,8 +184,7 @@ inline PrepResult prep_range(const double* p, const i64* off, i64 q0, i64 q1, in
     if (hi <= lo) return {EMPTY, q, 0};
     Norm r = normalize(p, lo, hi, keep.data(), turn.data(), idx + lo);
     if (r.code != OK) return {r.code, q, r.vertex};
-    if (r.step != 0)
-      for (i64 t = 0; t < r.k; ++t) idx[lo + t] = r.at(t);
+    if (r.step != 0) write_rotation(r, idx + lo);
     kk[q] = r.k;
     ss[q] = r.split;
     if (need_len && r.k > 1) {
