@@ -91,32 +91,48 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
     }
     return true;
   };
-  if constexpr (!std::is_floating_point_v<T>) {
-    // the __int128 cross products need |x| < 2^62 (one fused pass; RANGE -> exact path)
-    u64 acc = 0;
-    for (i64 i = lo; i < hi; ++i) {
+  // int64: the __int128 cross products need |x| < 2^62. The range is checked in the turn
+  // pass too (differences taken modulo 2^64 there, so out-of-range values cannot
+  // overflow; their verdicts are discarded); RANGE sends the caller to the exact path.
+  u64 racc = 0;
+  auto rangeacc = [&](i64 i) {
+    if constexpr (!std::is_floating_point_v<T>) {
       u64 x = (u64)p[2 * i] + (u64)(INT_LIMIT - 1), y = (u64)p[2 * i + 1] + (u64)(INT_LIMIT - 1);
-      acc |= (x | y);
+      racc |= (x | y);
+    } else {
+      (void)i;
     }
-    if (acc >= (u64)(2 * (INT_LIMIT - 1) + 1)) {
-      for (i64 i = lo; i < hi; ++i)
-        if (p[2 * i] >= INT_LIMIT || p[2 * i] <= -INT_LIMIT || p[2 * i + 1] >= INT_LIMIT ||
-            p[2 * i + 1] <= -INT_LIMIT) {
-          *bad = i - lo;
-          return 3;
-        }
+  };
+  auto in_range_or_bad = [&]() -> bool {
+    if constexpr (!std::is_floating_point_v<T>) {
+      if (racc >= (u64)(2 * (INT_LIMIT - 1) + 1)) {
+        for (i64 i = lo; i < hi; ++i)
+          if (p[2 * i] >= INT_LIMIT || p[2 * i] <= -INT_LIMIT || p[2 * i + 1] >= INT_LIMIT ||
+              p[2 * i + 1] <= -INT_LIMIT) {
+            *bad = i - lo;
+            return false;
+          }
+      }
     }
-  }
+    return true;
+  };
   if (n < 3) {
-    for (i64 i = lo; i < hi; ++i) expmax(i);
+    for (i64 i = lo; i < hi; ++i) expmax(i), rangeacc(i);
+    if (!in_range_or_bad()) return 3;
     return finite_or_bad() ? 0 : 2;
   }
   i64 pos = 0, neg = 0, trans = 0;
   // the turn at vertex i, from the edges h -> i -> k (branch-free; the middle loop has
   // no wrap-around, so the compiler can vectorize it)
+  auto diff = [](T a, T b) -> T {
+    if constexpr (std::is_floating_point_v<T>)
+      return a - b;
+    else
+      return (T)((u64)a - (u64)b);  // wraps for out-of-range input (then discarded)
+  };
   auto turn_at = [&](i64 h, i64 i, i64 k) {
-    T ux = p[2 * i] - p[2 * h], uy = p[2 * i + 1] - p[2 * h + 1];
-    T vx = p[2 * k] - p[2 * i], vy = p[2 * k + 1] - p[2 * i + 1];
+    T ux = diff(p[2 * i], p[2 * h]), uy = diff(p[2 * i + 1], p[2 * h + 1]);
+    T vx = diff(p[2 * k], p[2 * i]), vy = diff(p[2 * k + 1], p[2 * i + 1]);
     if constexpr (std::is_floating_point_v<T>) {
       double l = ux * vy, r = uy * vx, det = l - r;
       double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
@@ -131,10 +147,12 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
     bool up2 = (vy > 0) | ((vy == 0) & (vx > 0));
     trans += up1 & !up2;
     expmax(i);
+    rangeacc(i);
   };
   turn_at(hi - 1, lo, lo + 1);
   for (i64 i = lo + 1; i < hi - 1; ++i) turn_at(i - 1, i, i + 1);
   turn_at(hi - 2, hi - 1, lo);
+  if (!in_range_or_bad()) return 3;
   if (!finite_or_bad()) return 2;
   if (trans != 1) return 0;
   if (pos == n) return 1;

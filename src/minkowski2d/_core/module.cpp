@@ -312,13 +312,20 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
       off[0] = 0;
       for (i64 q = 0; q < P; ++q) off[q + 1] += off[q];
       total = off[P];
-      coords = alloc<T>(2 * (std::size_t)total);
-      parallel([&](int t) {
-        Chunk& c = ch[t];
-        if (c.used) std::memcpy(coords + 2 * off[c.q0], c.buf, sizeof(T) * 2 * c.used);
-        std::free(c.buf);
-        c.buf = nullptr;
-      });
+      if (nt == 1) {
+        // one chunk is already in place: hand its buffer over (numpy's shape covers the
+        // used rows; the unused tail of the capacity is freed with it)
+        coords = ch[0].buf;
+        ch[0].buf = nullptr;
+      } else {
+        coords = alloc<T>(2 * (std::size_t)total);
+        parallel([&](int t) {
+          Chunk& c = ch[t];
+          if (c.used) std::memcpy(coords + 2 * off[c.q0], c.buf, sizeof(T) * 2 * c.used);
+          std::free(c.buf);
+          c.buf = nullptr;
+        });
+      }
     }
     for (auto& c : ch) std::free(c.buf);  // the error path (null otherwise)
   }
