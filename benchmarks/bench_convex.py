@@ -211,6 +211,16 @@ def bench_batch(P: int, repeat: int) -> list[str]:
     return row(f"{P:,} pairs of 3–12-gons", ours, peers)
 
 
+def bench_threads(P: int, repeat: int) -> list[str]:
+    """threads=1 against threads=2 on P pairs from a Ragged (the GIL is released)."""
+    rng = np.random.default_rng(SEED + 1)
+    RA = mk.Ragged.from_list([random_hull(rng, int(k)) for k in rng.integers(3, 13, P)])
+    RB = mk.Ragged.from_list([random_hull(rng, int(k)) for k in rng.integers(3, 13, P)])
+    t1 = median_time(lambda: mk.minkowski_sum_many(RA, RB, threads=1), repeat)
+    t2 = median_time(lambda: mk.minkowski_sum_many(RA, RB, threads=2), repeat)
+    return row(f"{P:,} pairs, threads=1", t1, [("threads=2", t2, f"speed-up {t1 / t2:.2f}×")])
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--quick", action="store_true", help="smaller sizes, fewer repeats")
@@ -225,6 +235,7 @@ def main() -> None:
         lines += bench_single(n, integer, repeat)
         print(f"... n={n} done", file=sys.stderr)
     lines += bench_batch(10_000 if args.quick else 100_000, repeat)
+    lines += bench_threads(100_000 if args.quick else 1_000_000, max(3, repeat // 2))
     print("\n".join(lines))
     print(
         f"\nnumpy {np.__version__}, python {sys.version.split()[0]}; medians of {repeat} runs; "
