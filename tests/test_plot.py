@@ -113,3 +113,22 @@ def test_plot_is_callable_after_importing_the_module(plt):
     assert mk.plot(SQ) is not None and module.plot(SQ) is not None
     with pytest.raises(mk.errors.ShapeError):
         mk.plot("not a polygon")
+
+
+def test_offset_arcs_and_planner_plot_through_mk_plot(plt, tmp_path):
+    L = [(0, 0), (4, 0), (4, 1), (1, 1), (1, 3), (0, 3)]
+    ax = mk.plot(mk.offset_arcs(L, 0.6))
+    colors = {
+        tuple(line.get_color()) if not isinstance(line.get_color(), str) else line.get_color()
+        for line in ax.get_lines()
+    }
+    assert {"C0", "C3"} <= colors  # straight pieces and arcs drawn apart
+    ax.figure.savefig(tmp_path / "arcs.png")
+    obstacles = [[(2, 0), (4, 0), (4, 3), (2, 3)], [(2, 4), (4, 4), (4, 8), (2, 8)]]
+    planner = mk.MotionPlanner(obstacles, [(0, 0), (1, 0), (1, 1), (0, 1)], workspace=(0, 0, 8, 8))
+    path = planner.shortest_path((0, 2), (6, 2))
+    ax = mk.plot(planner, path=path)
+    assert ax.get_lines()  # the path
+    assert len(ax.patches) + len(ax.collections) >= 2  # obstacles and C-obstacles
+    ax.figure.savefig(tmp_path / "planner.png")
+    assert mk.plot(path).get_lines()

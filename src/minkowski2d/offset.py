@@ -946,6 +946,35 @@ class OffsetArcs:
                 total += float(seg.sum())
         return total
 
+    def _plot_(self, ax: Any, **kwargs: Any) -> Any:
+        """Draw for :func:`minkowski2d.plot`: the straight pieces and the arcs in two
+        colours (arcs sampled for display only, every 2 degrees), arc centres as dots."""
+        line = kwargs.pop("linewidth", 1.5)
+        for ring in self.rings:
+            n = len(ring)
+            for i in range(n):
+                x0, y0, b, cx, cy = (float(v) for v in ring[i])
+                x1, y1 = float(ring[(i + 1) % n, 0]), float(ring[(i + 1) % n, 1])
+                if b == 0.0:
+                    ax.plot([x0, x1], [y0, y1], color="C0", linewidth=line)
+                    continue
+                sweep = 4.0 * np.arctan(b)
+                t0 = np.arctan2(y0 - cy, x0 - cx)  # display only: no decision here
+                ts = t0 + np.linspace(0.0, sweep, max(2, int(abs(sweep) / 0.035) + 2))
+                ax.plot(
+                    cx + self.radius * np.cos(ts),
+                    cy + self.radius * np.sin(ts),
+                    color="C3",
+                    linewidth=line,
+                )
+                ax.plot([cx], [cy], ".", color="C3", markersize=3)
+        if self._source is not None:
+            from .plot import plot as _draw
+
+            _draw(self._source, ax=ax, facecolor="0.85", edgecolor="0.4", **kwargs)
+        ax.set_aspect("equal", adjustable="datalim")
+        return ax
+
     def to_polygon(self, tolerance: float, approx: str = "outer") -> Any:
         """A polygon within ``tolerance`` of this boundary, on the side ``approx`` says:
         the same as :func:`offset` with these arguments (and its guarantee).

@@ -87,6 +87,9 @@ class Path:
     def __repr__(self) -> str:
         return f"Path({len(self.points)} points, length={self.length!r})"
 
+    def _plot_(self, ax: Any, **kwargs: Any) -> Any:
+        return self.plot(ax, **kwargs)
+
     def plot(self, ax: Any = None, **kwargs: Any) -> Any:
         """Draw the path with matplotlib (imported only here); returns the axes.
 
@@ -828,6 +831,9 @@ class MotionPlanner:
                 )
             res.append(shapely.union_all(geoms))
         return res
+
+    def _plot_(self, ax: Any, path: Path | None = None, **kwargs: Any) -> Any:
+        return self.plot(ax, path=path)
 
     def plot(self, ax: Any = None, path: Path | None = None) -> Any:
         """Draw the obstacles, the C-obstacles and optionally a path with matplotlib
