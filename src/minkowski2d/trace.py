@@ -92,7 +92,8 @@ def _json_number(v: Any) -> int | float:
         return v if -_JS_SAFE <= v <= _JS_SAFE else float(v)
     except OverflowError:
         raise OverflowGeometryError(
-            "a coordinate is beyond float64, so it cannot be drawn (JSON numbers are floats)",
+            "a coordinate is beyond the float range (float64) of JSON numbers, so it cannot "
+            "be drawn",
             argument="trace",
             hint="scale the polygons down; the exact values are in the *_text fields",
         ) from None

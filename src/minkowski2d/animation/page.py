@@ -370,7 +370,9 @@ def page_data(
     """
     try:
         return _page_data(a, b, obstacle, robot, hull, hold_view, roomy)
-    except (OverflowError, RecursionError):
+    except (OverflowError, RecursionError, OverflowGeometryError) as exc:
+        if isinstance(exc, OverflowGeometryError) and exc.argument != "trace":
+            raise
         # exact integers beyond the float range: the page draws in floats
         raise OverflowGeometryError(
             "coordinates beyond the float range (about 1.8e308) cannot be drawn",
