@@ -58,7 +58,8 @@ inline bool finite_coord(T v) {
 // 0 unsure (the general pass decides), 2 a non-finite coordinate, 3 an int64 beyond the
 // core's range (vertex in *bad).
 template <class T>
-inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
+inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp, i64* lowup = nullptr,
+                      i64* uplow = nullptr) {
   i64 n = hi - lo;
   // doubles: non-finite <=> all exponent bits set. The max over the exponent fields is
   // taken in the turn pass below (one pass over the data), or here for n < 3; the
@@ -121,7 +122,7 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
     if (!in_range_or_bad()) return 3;
     return finite_or_bad() ? 0 : 2;
   }
-  i64 pos = 0, neg = 0, trans = 0;
+  i64 pos = 0, neg = 0, trans = 0, ilu = lo, iul = lo;
   // the turn at vertex i, from the edges h -> i -> k (branch-free; the middle loop has
   // no wrap-around, so the compiler can vectorize it)
   auto diff = [](T a, T b) -> T {
@@ -146,6 +147,11 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
     bool up1 = (uy > 0) | ((uy == 0) & (ux > 0));
     bool up2 = (vy > 0) | ((vy == 0) & (vx > 0));
     trans += up1 & !up2;
+    // the vertices where the edge directions cross between the half-planes (selects):
+    // for a strictly convex counter-clockwise polygon, lower->upper is the bottom-most
+    // vertex and upper->lower starts the first lower edge
+    ilu = (!up1 & up2) ? i : ilu;
+    iul = (up1 & !up2) ? i : iul;
     expmax(i);
     rangeacc(i);
   };
@@ -155,6 +161,8 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp) {
   if (!in_range_or_bad()) return 3;
   if (!finite_or_bad()) return 2;
   if (trans != 1) return 0;
+  if (lowup) *lowup = ilu;
+  if (uplow) *uplow = iul;
   if (pos == n) return 1;
   if (neg == n) return -1;
   return 0;
@@ -169,11 +177,20 @@ inline Norm normalize(const T* p, i64 lo, i64 hi, i64* keep, std::int8_t* turn, 
   r.lo = lo;
   r.n = hi - lo;
   r.idx = out;
-  i64 bad = 0;
-  int s = fast_check(p, lo, hi, &bad, &r.maxexp);
+  i64 bad = 0, lowup = lo, uplow = lo;
+  int s = fast_check(p, lo, hi, &bad, &r.maxexp, &lowup, &uplow);
   if (s == 2 || s == 3) {
     r.code = s == 2 ? NONFINITE : RANGE;
     r.vertex = bad;
+    return r;
+  }
+  if (s == 1) {
+    // counter-clockwise: the bottom-most vertex and the split came out of the turn pass
+    i64 n = hi - lo;
+    r.k = n;
+    r.b = lowup;
+    r.step = 1;
+    r.split = uplow >= lowup ? uplow - lowup : uplow - lowup + n;
     return r;
   }
   if (s != 0) {
