@@ -24,13 +24,13 @@ Run: ``python benchmarks/bench_general.py [--sizes 32 128 512 2048] [--no-cgal]`
 from __future__ import annotations
 
 import argparse
-import shutil
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
+import _cgal
 import numpy as np
 import shapely
 
@@ -38,8 +38,6 @@ import minkowski2d as mk
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data" / "cgal-minkowski"
-DRIVER_SRC = Path(__file__).with_name("cgal_driver.cpp")
-DRIVER = ROOT / "build" / "cgal_driver"
 
 
 def star(n: int, R: float, r: float, phase: float = 0.0) -> np.ndarray:
@@ -50,23 +48,8 @@ def star(n: int, R: float, r: float, phase: float = 0.0) -> np.ndarray:
 
 
 def build_driver() -> str | None:
-    """Path of the CGAL driver, building it if needed; None (and why) if impossible."""
-    if DRIVER.exists() and DRIVER.stat().st_mtime >= DRIVER_SRC.stat().st_mtime:
-        return str(DRIVER)
-    if shutil.which("g++") is None:
-        print("CGAL: skipped (no g++)")
-        return None
-    if not Path("/usr/include/CGAL/minkowski_sum_2.h").exists():
-        print("CGAL: skipped (libcgal-dev is not installed)")
-        return None
-    DRIVER.parent.mkdir(exist_ok=True)
-    print("CGAL: building build/cgal_driver (g++ -O2, about two minutes) ...", flush=True)
-    cmd = ["g++", "-O2", "-std=c++17", str(DRIVER_SRC), "-o", str(DRIVER), "-lgmp", "-lmpfr"]
-    res = subprocess.run(cmd, capture_output=True, text=True)
-    if res.returncode:
-        print("CGAL: skipped (build failed):", res.stderr[-500:])
-        return None
-    return str(DRIVER)
+    """Path of the CGAL driver, building it if needed (see ``_cgal.py``)."""
+    return _cgal.build_driver("cgal_driver", "minkowski_sum_2.h")
 
 
 def cgal(driver: str, method: str, a: np.ndarray, b: np.ndarray) -> tuple[float, float] | None:

@@ -25,13 +25,13 @@ has as many holes. Run: ``python benchmarks/bench_nfp.py [--instances albano fu 
 from __future__ import annotations
 
 import argparse
-import shutil
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
+import _cgal
 import numpy as np
 import shapely
 
@@ -39,8 +39,6 @@ import minkowski2d as mk
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data" / "esicup"
-DRIVER_SRC = Path(__file__).with_name("cgal_nfp_driver.cpp")
-DRIVER = ROOT / "build" / "cgal_nfp_driver"
 CLASSIC = [
     "albano", "blaz", "dagli", "dighe1", "dighe2", "fu", "jakobs1", "jakobs2", "mao",
     "marques", "shapes0", "shapes1", "shirts", "swim", "trousers",
@@ -50,23 +48,8 @@ REL = 1e-9
 
 
 def build_driver() -> str | None:
-    """Path of the CGAL NFP driver, building it if needed; None (and why) if impossible."""
-    if DRIVER.exists() and DRIVER.stat().st_mtime >= DRIVER_SRC.stat().st_mtime:
-        return str(DRIVER)
-    if shutil.which("g++") is None:
-        print("CGAL: skipped (no g++)")
-        return None
-    if not Path("/usr/include/CGAL/minkowski_sum_2.h").exists():
-        print("CGAL: skipped (libcgal-dev is not installed: apt-get install -y libcgal-dev)")
-        return None
-    DRIVER.parent.mkdir(exist_ok=True)
-    print("CGAL: building build/cgal_nfp_driver (g++ -O2, a minute or two) ...", flush=True)
-    cmd = ["g++", "-O2", "-std=c++17", str(DRIVER_SRC), "-o", str(DRIVER), "-lgmp", "-lmpfr"]
-    res = subprocess.run(cmd, capture_output=True, text=True)
-    if res.returncode:
-        print("CGAL: skipped (build failed):", res.stderr[-500:])
-        return None
-    return str(DRIVER)
+    """Path of the CGAL driver, building it if needed (see ``_cgal.py``)."""
+    return _cgal.build_driver("cgal_nfp_driver", "minkowski_sum_2.h")
 
 
 def rot(c: np.ndarray, angle: int) -> np.ndarray:

@@ -24,13 +24,13 @@ from __future__ import annotations
 
 import argparse
 import math
-import shutil
 import subprocess
 import sys
 import tempfile
 import time
 from pathlib import Path
 
+import _cgal
 import numpy as np
 import shapely
 
@@ -38,28 +38,11 @@ import minkowski2d as mk
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data" / "cgal-minkowski"
-DRIVER_SRC = Path(__file__).with_name("cgal_offset_driver.cpp")
-DRIVER = ROOT / "build" / "cgal_offset_driver"
 
 
 def build_driver() -> str | None:
-    """Path of the CGAL offset driver, building it if needed; None (and why) if not."""
-    if DRIVER.exists() and DRIVER.stat().st_mtime >= DRIVER_SRC.stat().st_mtime:
-        return str(DRIVER)
-    if shutil.which("g++") is None:
-        print("CGAL: skipped (no g++)")
-        return None
-    if not Path("/usr/include/CGAL/approximated_offset_2.h").exists():
-        print("CGAL: skipped (libcgal-dev is not installed: apt-get install -y libcgal-dev)")
-        return None
-    DRIVER.parent.mkdir(exist_ok=True)
-    print("CGAL: building build/cgal_offset_driver (g++ -O2, about a minute) ...", flush=True)
-    cmd = ["g++", "-O2", "-std=c++17", str(DRIVER_SRC), "-o", str(DRIVER), "-lgmp", "-lmpfr"]
-    res = subprocess.run(cmd, capture_output=True, text=True)
-    if res.returncode:
-        print("CGAL: skipped (build failed):", res.stderr[-500:])
-        return None
-    return str(DRIVER)
+    """Path of the CGAL driver, building it if needed (see ``_cgal.py``)."""
+    return _cgal.build_driver("cgal_offset_driver", "approximated_offset_2.h")
 
 
 def run_cgal(driver: str, g, d: float, eps: float, repeat: int):
