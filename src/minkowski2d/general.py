@@ -44,6 +44,7 @@ from typing import Any
 import numpy as np
 
 from ._coerce import as_array
+from ._geos import area_parts, boundary, checked_polygonal
 from .batch import Ragged, minkowski_sum_many
 from .errors import (
     EmptyGeometryError,
@@ -51,7 +52,6 @@ from .errors import (
     NonFiniteError,
     OverflowGeometryError,
     ResourceLimitError,
-    SelfIntersectionError,
     ShapeError,
 )
 
@@ -93,40 +93,7 @@ CONE_SLACK = 1e-12
 PROVENANCE_TOLERANCE = 1e-9
 
 
-def _boundary(argument: str, what: str):
-    """Context manager: turn a shapely / GEOS / numpy failure into a GeometryError that
-    names ``argument`` (a GeometryError passes through unchanged)."""
-    from contextlib import contextmanager
-
-    import shapely.errors
-
-    @contextmanager
-    def cm():
-        try:
-            with np.errstate(over="raise", invalid="ignore"):
-                yield
-        except GeometryError:
-            raise
-        except MemoryError as exc:
-            raise ResourceLimitError(
-                f"{argument}: out of memory while {what}",
-                argument=argument,
-                hint="reduce the number of vertices (or of non-convex vertices)",
-            ) from exc
-        except (OverflowError, FloatingPointError) as exc:
-            raise OverflowGeometryError(
-                f"{argument}: a coordinate overflows float64 while {what} ({exc})",
-                argument=argument,
-                hint="the result does not fit in float64; scale the input down",
-            ) from exc
-        except (shapely.errors.ShapelyError, ValueError) as exc:
-            raise GeometryError(
-                f"{argument}: GEOS failed while {what} ({type(exc).__name__}: {exc})",
-                argument=argument,
-                hint="check that the input is a valid polygon; please report it if it is",
-            ) from exc
-
-    return cm()
+_boundary = boundary  # the GEOS boundary lives in _geos (shared with offset.py)
 
 
 def _exponent(x: Any) -> int:
@@ -386,29 +353,10 @@ def _operands(*pairs: tuple[Any, str]) -> tuple[int, list[_Operand]]:
 
 
 def _check_geom(geom: Any, name: str) -> Any:
-    """Validate a Polygon / MultiPolygon and orient it (exteriors CCW, holes CW).
-
-    A hole that touches the shell at two points (valid for CGAL, "interior is
-    disconnected" for GEOS) is a well-defined region: it is split into its parts.
-    """
-    import shapely
-
-    if geom.is_empty:
-        raise EmptyGeometryError(f"{name}: empty {geom.geom_type}", argument=name)
-    c = shapely.get_coordinates(geom)
-    if not np.isfinite(c).all():
-        raise NonFiniteError(f"{name}: a coordinate is not finite", argument=name)
-    with _boundary(name, "validating the polygon"):
-        if not shapely.is_valid(geom):
-            reason = shapely.is_valid_reason(geom)
-            if not reason.startswith("Interior is disconnected"):
-                raise SelfIntersectionError(
-                    f"{name}: not a valid polygon ({reason})",
-                    argument=name,
-                    hint="the boundary must not cross itself; holes must lie inside",
-                )
-            geom = shapely.make_valid(geom, method="structure")
-        return shapely.orient_polygons(geom)
+    """Validate a Polygon / MultiPolygon and orient it (see :func:`_geos.checked_polygonal`)."""
+    return checked_polygonal(
+        geom, name, hint="the boundary must not cross itself; holes must lie inside"
+    )
 
 
 def _flat_geom(flat: np.ndarray) -> Any:
@@ -453,11 +401,9 @@ def _result(geom: Any) -> Any:
     """Polygon or MultiPolygon, exterior CCW and holes CW; empty Polygon if nothing."""
     import shapely
 
-    parts = shapely.get_parts(geom)
-    polys = parts[(shapely.get_type_id(parts) == 3) & (shapely.area(parts) > 0)]
-    if len(polys) == 0:
-        return shapely.Polygon()
-    g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
+    g = area_parts(geom)
+    if g.is_empty:
+        return g
     # drop the collinear vertices the union leaves, start each ring at a canonical vertex
     g = shapely.normalize(shapely.simplify(g, 0.0))
     return shapely.orient_polygons(g)

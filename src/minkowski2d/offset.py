@@ -66,11 +66,10 @@ from typing import Any
 import numpy as np
 
 from ._coerce import as_array
+from ._geos import area_parts, checked_polygonal
 from .errors import (
-    EmptyGeometryError,
     GeometryError,
     NonFiniteError,
-    SelfIntersectionError,
     ShapeError,
 )
 from .predicates import orient_array
@@ -158,28 +157,17 @@ def _check_shapely(geom: Any, name: str) -> Any:
             argument=name,
             hint="pass the coordinates as an (n, 2) array for a point or a segment",
         )
-    if geom.is_empty:
-        raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
-    c = shapely.get_coordinates(geom)
-    if not np.isfinite(c).all():
-        raise NonFiniteError(
-            f"{name}: a coordinate is not finite", argument=name, hint="remove NaN and inf"
-        )
-    if not shapely.is_valid(geom) and gt == "MultiPolygon":
+    if not geom.is_empty and not shapely.is_valid(geom) and gt == "MultiPolygon":
         parts = shapely.get_parts(geom)
         if shapely.is_valid(parts).all():
             # parts that touch or overlap: their union has the same offset
             geom = shapely.union_all(parts)
-    if not shapely.is_valid(geom):
-        reason = shapely.is_valid_reason(geom)
-        if not reason.startswith("Interior is disconnected"):
-            raise SelfIntersectionError(
-                f"{name}: not a valid polygon ({reason})",
-                argument=name,
-                hint="repair it first, e.g. shapely.make_valid",
-            )
-        geom = shapely.make_valid(geom, method="structure")
-    return shapely.orient_polygons(geom)
+    return checked_polygonal(
+        geom,
+        name,
+        hint="repair it first, e.g. shapely.make_valid",
+        nonfinite_hint="remove NaN and inf",
+    )
 
 
 def _read(obj: Any, name: str) -> tuple[list[np.ndarray], Any]:
@@ -548,11 +536,9 @@ def _chunks_union(curves: list[_Curve], size: int = 64) -> Any:
 def _result(geom: Any) -> Any:
     import shapely
 
-    parts = shapely.get_parts(geom)
-    polys = parts[(shapely.get_type_id(parts) == 3) & (shapely.area(parts) > 0)]
-    if len(polys) == 0:
-        return shapely.Polygon()
-    g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
+    g = area_parts(geom)
+    if g.is_empty:
+        return g
     # each ring from its least (x, y) vertex; exteriors counter-clockwise, holes clockwise
     return shapely.orient_polygons(shapely.normalize(g))
 
