@@ -705,20 +705,11 @@ def _map(fn: Any, polygon: Any) -> Any:
             convex=False,
             names=("polygon",),
         )
-    tname = type(polygon).__name__
-    items = list(polygon)
-    res = [None if g is None else fn(g) for g in items]
-    if tname == "GeoSeries":
-        return type(polygon)(res, index=polygon.index, crs=polygon.crs)
-    if tname == "GeometryArray":
-        from geopandas.array import from_shapely
-
-        return from_shapely(res, crs=polygon.crs)
+    # lists and tuples of polygons (containers went through _containers above)
+    res = [None if g is None else fn(g) for g in polygon]
     if isinstance(polygon, np.ndarray):
-        out = np.empty(len(res), dtype=object)
-        out[:] = res
-        return out
-    return type(polygon)(res) if isinstance(polygon, tuple) else res
+        return _list_result(res)
+    return tuple(res) if isinstance(polygon, tuple) else res
 
 
 def _check_options(distance, tolerance, approx, join, miter_limit):

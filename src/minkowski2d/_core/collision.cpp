@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bind.hpp"
 #include "collision.hpp"
 
 namespace nb = nanobind;
@@ -19,22 +20,13 @@ namespace mk_bind {
 
 namespace {
 
-template <class T>
-using CIn2 = nb::ndarray<const T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using CIn1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using W1 = nb::ndarray<T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using W2 = nb::ndarray<T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-
 void need(bool ok, const char* what) {
   if (!ok) throw nb::value_error(what);
 }
 
 // prep(p, off, is_int, mode, idx, kk, ss, inv, threads) -> (code, polygon, vertex)
-nb::tuple prep_b(CIn2<double> p, CIn1<i64> off, bool is_int, int mode, W1<i64> idx,
-                 W1<i64> kk, W1<i64> ss, W1<double> inv, int threads) {
+nb::tuple prep_b(In2<double> p, In1<i64> off, bool is_int, int mode, Mut1<i64> idx,
+                 Mut1<i64> kk, Mut1<i64> ss, Mut1<double> inv, int threads) {
   need(p.shape(1) == 2, "prep: p must have shape (n, 2)");
   i64 P = (i64)off.shape(0) - 1;
   i64 n = (i64)p.shape(0);
@@ -54,10 +46,10 @@ nb::tuple prep_b(CIn2<double> p, CIn1<i64> off, bool is_int, int mode, W1<i64> i
 
 // pairs(pa, offa, ida, ka, sa, inva, pb, offb, idb, kb, sb, invb, qa, qb, mode, hit, res,
 //       threads) -> first pair where GJK hit its cap, or -1
-i64 pairs_b(CIn2<double> pa, CIn1<i64> offa, CIn1<i64> ida, CIn1<i64> ka, CIn1<i64> sa,
-            CIn1<double> inva, CIn2<double> pb, CIn1<i64> offb, CIn1<i64> idb, CIn1<i64> kb,
-            CIn1<i64> sb, CIn1<double> invb, CIn1<i64> qa, CIn1<i64> qb, int mode,
-            W1<std::int8_t> hit, W2<double> res, int threads) {
+i64 pairs_b(In2<double> pa, In1<i64> offa, In1<i64> ida, In1<i64> ka, In1<i64> sa,
+            In1<double> inva, In2<double> pb, In1<i64> offb, In1<i64> idb, In1<i64> kb,
+            In1<i64> sb, In1<double> invb, In1<i64> qa, In1<i64> qb, int mode,
+            Mut1<std::int8_t> hit, Mut2<double> res, int threads) {
   i64 P = (i64)qa.shape(0);
   need((i64)qb.shape(0) == P && (i64)hit.shape(0) >= P, "pairs: bad sizes");
   bool rows = mode == mk::coll::DISTANCE || mode == mk::coll::PENETRATION;
@@ -80,8 +72,8 @@ i64 pairs_b(CIn2<double> pa, CIn1<i64> offa, CIn1<i64> ida, CIn1<i64> ka, CIn1<i
 // single(pa, pb, mode, int_a, int_b, res (1, 7)) -> (code, which, vertex, hit): code 0 on
 // success, else a Status or OUT_OF_RANGE for operand `which` (0 = a, 1 = b) at `vertex`;
 // GJK's cap gives code -1.
-nb::tuple single_b(CIn2<double> pa, CIn2<double> pb, int mode, bool int_a, bool int_b,
-                   W2<double> res) {
+nb::tuple single_b(In2<double> pa, In2<double> pb, int mode, bool int_a, bool int_b,
+                   Mut2<double> res) {
   need(pa.shape(1) == 2 && pb.shape(1) == 2, "single: shape (n, 2) expected");
   need(res.shape(0) >= 1 && res.shape(1) == mk::coll::NCOL, "single: res must be (1, 7)");
   i64 na = (i64)pa.shape(0), nb_ = (i64)pb.shape(0);
@@ -123,8 +115,8 @@ nb::tuple single_b(CIn2<double> pa, CIn2<double> pb, int mode, bool int_a, bool 
 
 // contains_single(p, int_p, pts, int_pts, out) -> (code, which, vertex): which 0 = poly,
 // 1 = points.
-nb::tuple contains_single_b(CIn2<double> p, bool int_p, CIn2<double> pts, bool int_pts,
-                            W1<bool> out) {
+nb::tuple contains_single_b(In2<double> p, bool int_p, In2<double> pts, bool int_pts,
+                            Mut1<bool> out) {
   need(p.shape(1) == 2 && pts.shape(1) == 2, "contains: shape (n, 2) expected");
   need(out.shape(0) >= pts.shape(0), "contains: out too short");
   i64 n = (i64)p.shape(0), m = (i64)pts.shape(0);

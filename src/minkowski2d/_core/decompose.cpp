@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "bind.hpp"
 #include "decompose.hpp"
 #include "exact.hpp"
 
@@ -19,25 +20,9 @@ using mk::i64;
 namespace mk_bind {
 namespace {
 
-template <class T>
-using CIn2 = nb::ndarray<const T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using CIn1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-using Ids = nb::ndarray<i64, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-using CIds = nb::ndarray<const i64, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using COut = nb::ndarray<nb::numpy, T>;
-
-template <class T>
-COut<T> own1(T* data, std::size_t n) {
-  nb::capsule owner(data, [](void* q) noexcept { delete[] static_cast<T*>(q); });
-  std::size_t shape[1] = {n};
-  return COut<T>(data, 1, shape, owner);
-}
-
 // The kernels index blindly: check the arrays the Python side built before trusting them.
 template <class T>
-void check_inputs(const CIn2<T>& P, const i64* ids, std::size_t ntri, std::size_t cols) {
+void check_inputs(const In2<T>& P, const i64* ids, std::size_t ntri, std::size_t cols) {
   if (P.shape(1) != 2) throw nb::value_error("decompose: vertices must have shape (n, 2)");
   if (cols != 3) throw nb::value_error("decompose: triangles must have shape (T, 3)");
   const i64 n = (i64)P.shape(0);
@@ -58,21 +43,21 @@ void check_inputs(const CIn2<T>& P, const i64* ids, std::size_t ntri, std::size_
 // orient_triangles_*(verts (n, 2), ids (T, 3) int64, writable) -> keep (T,) bool.
 // ids is reordered in place so that every triangle is counter-clockwise.
 template <class T>
-COut<bool> orient_triangles(CIn2<T> P, Ids I) {
+Out<bool> orient_triangles(In2<T> P, Mut2<i64> I) {
   std::size_t ntri = I.shape(0);
   check_inputs<T>(P, I.data(), ntri, I.shape(1));
-  bool* keep = new bool[ntri > 0 ? ntri : 1];
+  bool* keep = alloc<bool>(ntri);
   {
     nb::gil_scoped_release nogil;
     mk::decompose::orient_triangles(P.data(), I.data(), (i64)ntri, keep);
   }
-  return own1(keep, ntri);
+  return owned(keep, ntri, 0);
 }
 
 // hertel_mehlhorn_*(verts (n, 2), ids (T, 3) CCW, twin (3T,), merge) -> (vertex ids (N,),
 // offsets (P + 1,)): the pieces, each CCW from its bottom-most vertex.
 template <class T>
-nb::tuple hertel_mehlhorn(CIn2<T> P, CIds I, CIn1<i64> Tw, bool merge) {
+nb::tuple hertel_mehlhorn(In2<T> P, In2<i64> I, In1<i64> Tw, bool merge) {
   const std::size_t ntri = I.shape(0);
   const i64 H = 3 * (i64)ntri;
   check_inputs<T>(P, I.data(), ntri, I.shape(1));
@@ -86,15 +71,15 @@ nb::tuple hertel_mehlhorn(CIn2<T> P, CIds I, CIn1<i64> Tw, bool merge) {
     if (t < 0 || t >= H || t == h || twin[t] != h)
       throw nb::value_error("decompose: twin is not a pairing of half-edges");
   }
-  i64* out = new i64[H > 0 ? H : 1];
-  i64* off = new i64[ntri + 1];
+  i64* out = alloc<i64>(H);
+  i64* off = alloc<i64>(ntri + 1);
   i64 npieces;
   {
     nb::gil_scoped_release nogil;
     npieces = mk::decompose::hertel_mehlhorn(P.data(), I.data(), (i64)ntri, twin, merge, out, off);
   }
   i64 n_out = off[npieces];
-  return nb::make_tuple(own1(out, (std::size_t)n_out), own1(off, (std::size_t)npieces + 1));
+  return nb::make_tuple(owned(out, (std::size_t)n_out, 0), owned(off, (std::size_t)npieces + 1, 0));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <vector>
 
+#include "bind.hpp"
 #include "planning.hpp"
 
 namespace nb = nanobind;
@@ -20,26 +21,6 @@ namespace mk_bind {
 namespace {
 
 template <class T>
-using PIn2 = nb::ndarray<const T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using PIn1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
-template <class T>
-using POut = nb::ndarray<nb::numpy, T>;
-
-template <class T>
-POut<T> to_numpy(const std::vector<T>& v, std::size_t rows, std::size_t cols) {
-  T* data = new T[v.size() > 0 ? v.size() : 1];
-  if (!v.empty()) std::memcpy(data, v.data(), sizeof(T) * v.size());
-  nb::capsule owner(data, [](void* p) noexcept { delete[] static_cast<T*>(p); });
-  if (cols == 0) {
-    std::size_t shape[1] = {rows};
-    return POut<T>(data, 1, shape, owner);
-  }
-  std::size_t shape[2] = {rows, cols};
-  return POut<T>(data, 2, shape, owner);
-}
-
-template <class T>
 void bind_planner(nb::module_& m, const char* name) {
   using PL = mk::Planner<T>;
   nb::class_<PL>(m, name)
@@ -47,7 +28,7 @@ void bind_planner(nb::module_& m, const char* name) {
       // coords (V, 2) of the solid pieces, offsets (P + 1,), groups (P,), box (4,) or empty
       .def(
           "build",
-          [](PL& self, PIn2<T> coords, PIn1<i64> off, PIn1<i64> grp, PIn1<T> box, int threads) {
+          [](PL& self, In2<T> coords, In1<i64> off, In1<i64> grp, In1<T> box, int threads) {
             self.threads = threads;
             const T* c = coords.data();
             self.pc.assign(c, c + 2 * coords.shape(0));
@@ -81,7 +62,7 @@ void bind_planner(nb::module_& m, const char* name) {
            })
       // many queries: (status (n,), group (n,), points (M, 2), offsets (n + 1,))
       .def("query_many",
-           [](const PL& self, PIn2<T> S0, PIn2<T> G0) {
+           [](const PL& self, In2<T> S0, In2<T> G0) {
              std::size_t n = S0.shape(0);
              std::vector<int> st(n), gr(n);
              std::vector<T> pts;
@@ -104,7 +85,7 @@ void bind_planner(nb::module_& m, const char* name) {
            })
       // per point: -2 outside the box, g >= 0 inside group g's C-obstacle, -1 free
       .def("locate",
-           [](const PL& self, PIn2<T> pts) {
+           [](const PL& self, In2<T> pts) {
              std::size_t n = pts.shape(0);
              std::vector<int> res(n);
              {

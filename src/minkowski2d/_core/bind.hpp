@@ -1,0 +1,88 @@
+// bind.hpp -- what every binding file shares: the array types it accepts and returns,
+// and how memory is handed to numpy (one allocator, one owner capsule).
+#pragma once
+
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include <sys/mman.h>
+
+#include "exact.hpp"
+
+namespace mk_bind {
+
+namespace nb = nanobind;
+using mk::i64;
+
+template <class T>
+using Mut1 = nb::ndarray<T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+
+template <class T>
+using In2 = nb::ndarray<const T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+template <class T>
+using In1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+template <class T>
+using Out = nb::ndarray<nb::numpy, T>;
+
+// Memory handed to numpy: malloc'd, and for large blocks 2 MiB-aligned with
+// madvise(MADV_HUGEPAGE), as numpy's own allocator does. On this kind of kernel
+// (transparent huge pages in "madvise" mode) fresh 4 KiB pages cost a fault each, and
+// faults of one process serialize on its memory-map lock: with huge pages a 160 MB
+// result takes 80 faults instead of 40,000, and threads stop queueing on them.
+inline void* big_malloc(std::size_t bytes) {
+  constexpr std::size_t HUGE = std::size_t(1) << 21;
+  if (bytes < (std::size_t(4) << 20)) return std::malloc(bytes > 0 ? bytes : 1);
+  std::size_t rounded = (bytes + HUGE - 1) & ~(HUGE - 1);
+  void* p = std::aligned_alloc(HUGE, rounded);
+#ifdef MADV_HUGEPAGE
+  if (p) madvise(p, rounded, MADV_HUGEPAGE);
+#endif
+  return p;
+}
+
+template <class T>
+T* alloc(std::size_t n) {
+  void* p = big_malloc(sizeof(T) * (n > 0 ? n : 1));
+  if (!p) throw std::bad_alloc();
+  return static_cast<T*>(p);
+}
+
+// A new numpy array owning `data` (from alloc<T>).
+template <class T>
+Out<T> owned(T* data, std::size_t rows, std::size_t cols) {
+  nb::capsule owner(data, [](void* p) noexcept { std::free(p); });
+  if (cols == 0) {
+    std::size_t shape[1] = {rows};
+    return Out<T>(data, 1, shape, owner);
+  }
+  std::size_t shape[2] = {rows, cols};
+  return Out<T>(data, 2, shape, owner);
+}
+
+// Uninitialized scratch (std::vector would zero it: for 2^20 vertices that memset costs
+// more than the merge; untouched pages of a large new[] are never even faulted in).
+template <class T>
+struct Buf {
+  std::unique_ptr<T[]> p;
+  explicit Buf(i64 n) : p(new T[n > 0 ? n : 1]) {}
+  T* data() { return p.get(); }
+};
+
+template <class T>
+using Mut2 = nb::ndarray<T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
+
+// A new numpy array holding a copy of `v` (rows x cols; cols == 0: one dimension).
+template <class T>
+Out<T> to_numpy(const std::vector<T>& v, std::size_t rows, std::size_t cols) {
+  T* data = alloc<T>(v.size());
+  if (!v.empty()) std::memcpy(data, v.data(), sizeof(T) * v.size());
+  return owned(data, rows, cols);
+}
+
+}  // namespace mk_bind
