@@ -42,7 +42,7 @@ from ._coerce import INT, as_array
 from ._containers import apply, boxed
 from ._core import _ext
 from ._types import ArrayLike2, PolygonsLike, ProgressLike
-from .errors import NonFiniteError, NotConvexError, OverflowGeometryError, ShapeError
+from .errors import NonFiniteError, OverflowGeometryError, ShapeError
 
 __all__ = [
     "Distance",
@@ -116,10 +116,6 @@ class Penetration(NamedTuple):
     point_b: np.ndarray
 
 
-def _not_convex(name: str, code: int, vertex: int) -> NotConvexError:
-    return _exact.not_convex(name, code, vertex)
-
-
 # --------------------------------------------------------------------------------------
 # operands
 
@@ -145,7 +141,7 @@ def _raise(code: int, name: str, vertex: int) -> None:
         raise NonFiniteError(
             f"{name}: vertex {vertex} has a non-finite coordinate", argument=name, vertex=vertex
         )
-    raise _not_convex(name, code, vertex)
+    raise _exact.not_convex(name, code, vertex)
 
 
 def _threads(threads: Any) -> int:
@@ -596,7 +592,7 @@ def _exact_normalize(pts: list, name: str) -> tuple[list, int]:
     if all(-lim < v < lim for p in rel for v in p):
         idx, split, code, v = _ext.normalize_i(np.array(rel, dtype=np.int64).reshape(-1, 2))
         if code:
-            raise _not_convex(name, int(code), int(v))
+            raise _exact.not_convex(name, int(code), int(v))
         return idx.tolist(), int(split)
     _, idx, split = _exact.normalize_list(rel, name)  # the core's twin in Python ints
     return idx, split
