@@ -30,7 +30,8 @@ tests.test_cgal_crosscheck [-v]`` prints the tally by kind of mismatch (and each
 
 Also here: the two reproducers of issue 16 (a dagli part rotated by 105 degrees with
 itself: area 107.99999...; a shirts pair that GEOS fails to node with
-``method="convolution"``).
+``method="convolution"``), and a third found by ``benchmarks/bench_nfp_free.py`` (two
+U-shaped jakobs2 parts at 86 degrees: area 194 instead of 196).
 """
 
 from __future__ import annotations
@@ -260,7 +261,10 @@ def test_nfp_vertex_sets_equal_cgal(key, variant):
 
 
 # the reproducers of issue 16, with the coordinates as the issue gives them (rounded to
-# 6 decimals: the full-precision rotation of that dagli part does not lose the region)
+# 6 decimals: the full-precision rotation of that dagli part does not lose the region),
+# and one found by benchmarks/bench_nfp_free.py: two U-shaped jakobs2 parts (5 and 6),
+# both rotated by 86 degrees, where the decomposition loses 2 of 196 units of area
+# (in a single call and in no_fit_polygons) and the convolution fails to node
 DAGLI_105 = [
     (-0.258819, 0.965926), (-1.035276, 3.863703), (-7.08965, 3.276715),
     (-6.830831, 2.310789), (-5.864905, 2.569608), (-4.64016, 1.862501),
@@ -272,64 +276,81 @@ SHIRTS_A = [
     (3.535534, -2.12132), (2.828427, -1.414214), (2.828427, 0), (0.707107, 2.12132),
 ]  # fmt: skip
 SHIRTS_B = [(0, 0), (-1, 7), (-5, 7), (-7, 0), (-5, -1), (-4, -1), (-3, -2), (-2, -1)]
+JAKOBS2_5 = [(0, 0), (6, 0), (6, 6), (4, 6), (4, 2), (2, 2), (2, 6), (0, 6)]
+JAKOBS2_6 = [(0, 0), (8, 0), (8, 8), (6, 8), (6, 2), (2, 2), (2, 8), (0, 8)]
+#: name -> (A, B, checked for area): the NFP A ⊕ (−B)
+REPRODUCERS = {
+    "dagli105-self": (DAGLI_105, DAGLI_105, True),
+    "shirts-7@315-0@90": (SHIRTS_A, SHIRTS_B, False),
+    "jakobs2-5@86-6@86": (
+        mk.rotate_part(JAKOBS2_5, 86),
+        mk.rotate_part(JAKOBS2_6, 86),
+        True,
+    ),
+}
 
 
 @functools.cache
-def reproducer_refs() -> tuple:
-    return tuple(cgal_peer.no_fit_polygons([(DAGLI_105, DAGLI_105), (SHIRTS_A, SHIRTS_B)]))
+def reproducer_refs() -> dict:
+    pairs = [(a, b) for a, b, _ in REPRODUCERS.values()]
+    return dict(zip(REPRODUCERS, cgal_peer.no_fit_polygons(pairs), strict=True))
 
 
-def _xfail(*ids: str) -> dict:
-    """Marks for the reproducer ids that fail today (from the same list)."""
-    known = _known_failing()
-    return {i: [pytest.mark.xfail(strict=False, reason=REASON)] if i in known else [] for i in ids}
-
-
-_DAGLI_IDS = ("dagli105-self-area-decomposition", "dagli105-self-area-convolution")
-_DAGLI_MARKS = _xfail(*_DAGLI_IDS)
-
-
-@pytest.mark.parametrize(
-    "method",
-    [pytest.param(m, id=i, marks=_DAGLI_MARKS[i]) for m, i in zip(VARIANTS[:2], _DAGLI_IDS)],
-)
-def test_issue16_dagli_105_self_nfp_area(method):
-    ref = reproducer_refs()[0]
-    assert 107.99 < ref.area < 108  # 107.99999... (CGAL's exact area)
-    g = mk.minkowski_sum_general(DAGLI_105, mk.reflect(DAGLI_105), method=method)
-    assert abs(g.area - float(ref.area)) <= 1e-12 * float(ref.area), (g.area, float(ref.area))
-    assert sum(len(p.interiors) for p in shapely.get_parts(g)) == ref.holes
-
-
-_REPRO_IDS = (
-    "dagli105-self-vertices-decomposition",
-    "dagli105-self-vertices-convolution",
-    "shirts-7@315-0@90-vertices-decomposition",
-    "shirts-7@315-0@90-vertices-convolution",
-)
-_REPRO_MARKS = _xfail(*_REPRO_IDS)
-
-
-@pytest.mark.parametrize(
-    ("which", "method"),
-    [
-        pytest.param(w, m, id=i, marks=_REPRO_MARKS[i])
-        for (w, m), i in zip(
-            [(w, m) for w in (0, 1) for m in VARIANTS[:2]], _REPRO_IDS, strict=True
-        )
-    ],
-)
-def test_issue16_reproducers_vertex_sets_equal_cgal(which, method):
-    """The issue's reproducers, compared like the sample (the shirts pair with
-    ``method="convolution"`` raised "GEOS failed ... Iterated noding failed to
-    converge")."""
-    a, b = [(DAGLI_105, DAGLI_105), (SHIRTS_A, SHIRTS_B)][which]
+def check_reproducer(name: str, what: str, method: str) -> tuple[str, str] | None:
+    """None when the reproducer passes; else (kind, description). ``what``: ``"area"``
+    (the area within 1e-12 relative of CGAL's exact area, as many holes) or
+    ``"vertices"`` (the comparison of the sample)."""
+    a, b, _ = REPRODUCERS[name]
+    ref = reproducer_refs()[name]
     try:
         g = mk.minkowski_sum_general(a, mk.reflect(b), method=method)
     except mk.errors.GeometryError as exc:
-        g = exc
-    bad = compare(g, reproducer_refs()[which])
+        return "error", f"{type(exc).__name__}: {str(exc)[:160]}"
+    if what == "vertices":
+        return compare(g, ref)
+    area = float(ref.area)
+    nh = sum(len(p.interiors) for p in shapely.get_parts(g))
+    if abs(g.area - area) > 1e-12 * area or nh != ref.holes:
+        return "area", f"area {g.area!r}, {nh} holes; CGAL {area!r}, {ref.holes} holes"
+    return None
+
+
+def _reproducer_params(what: str) -> list:
+    known = _known_failing()
+    out = []
+    for name, (_, _, area) in REPRODUCERS.items():
+        if what == "area" and not area:
+            continue
+        for m in VARIANTS[:2]:
+            ident = f"{name}-{what}-{m}"
+            marks = [pytest.mark.xfail(strict=False, reason=REASON)] if ident in known else []
+            out.append(pytest.param(name, m, id=ident, marks=marks))
+    return out
+
+
+@pytest.mark.parametrize(("name", "method"), _reproducer_params("area"))
+def test_reproducer_area_equals_cgal(name, method):
+    """dagli105-self: 107.99999... (GEOS's union_all of the 25 piece sums lost a 3.5-unit
+    region: 104.49999...); jakobs2: 195.99999999999997."""
+    bad = check_reproducer(name, "area", method)
     assert bad is None, f"{bad[0]}: {bad[1]}"
+
+
+@pytest.mark.parametrize(("name", "method"), _reproducer_params("vertices"))
+def test_reproducer_vertex_sets_equal_cgal(name, method):
+    """The reproducers compared like the sample (the shirts pair with
+    ``method="convolution"`` raised "GEOS failed ... Iterated noding failed to
+    converge")."""
+    bad = check_reproducer(name, "vertices", method)
+    assert bad is None, f"{bad[0]}: {bad[1]}"
+
+
+def test_reproducer_references():
+    """CGAL's exact areas of the reproducers are what the issue says."""
+    refs = reproducer_refs()
+    assert 107.99999 < refs["dagli105-self"].area < 108
+    assert float(refs["jakobs2-5@86-6@86"].area) == 195.99999999999997
+    assert all(r.holes == 0 for r in refs.values())
 
 
 def test_peer_reads_cgal_exactly():
@@ -368,20 +389,12 @@ def _survey() -> tuple[list, Counter]:
             if bad:
                 failing.append((key_id(key, v), *bad))
                 kinds[(v, bad[0])] += 1
-    refs = reproducer_refs()
-    for m, i in zip(VARIANTS[:2], _DAGLI_IDS):
-        g = mk.minkowski_sum_general(DAGLI_105, mk.reflect(DAGLI_105), method=m)
-        if abs(g.area - float(refs[0].area)) > 1e-12 * float(refs[0].area):
-            failing.append((i, "area", f"area {g.area!r} vs CGAL {float(refs[0].area)!r}"))
-    for (w, m), i in zip([(w, m) for w in (0, 1) for m in VARIANTS[:2]], _REPRO_IDS):
-        a, b = [(DAGLI_105, DAGLI_105), (SHIRTS_A, SHIRTS_B)][w]
-        try:
-            g = mk.minkowski_sum_general(a, mk.reflect(b), method=m)
-        except mk.errors.GeometryError as exc:
-            g = exc
-        bad = compare(g, refs[w])
-        if bad:
-            failing.append((i, *bad))
+    for what in ("area", "vertices"):
+        for p in _reproducer_params(what):
+            name, m = p.values
+            bad = check_reproducer(name, what, m)
+            if bad:
+                failing.append((p.id, *bad))
     return failing, kinds
 
 
