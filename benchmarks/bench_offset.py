@@ -188,7 +188,10 @@ def best(f, repeat):
 
 def errors(out, P, d):
     """(out, in): how far the boundary of ``out`` reaches beyond / falls inside the true
-    offset's boundary (GEOS float distances)."""
+    offset's boundary (GEOS float distances). Vertices are measured by their distance to
+    ``∂P``, edges by their least distance to it: that is where a chord is farthest from
+    its arc, inside the true set for a grow (``in``) and beyond it for a shrink
+    (``out``: a chord around a reflex vertex of ``P`` comes closer to it than ``r``)."""
     r = abs(d)
     if out.is_empty:
         return math.nan, math.nan
@@ -208,9 +211,11 @@ def errors(out, P, d):
     del ref
     if d > 0:  # signed: positive = beyond the true boundary (outside the true set)
         s_vert, s_edge = dv - r, de - r
+        beyond = float(s_vert.max())
     else:
         s_vert, s_edge = r - dv, r - de
-    return max(0.0, float(s_vert.max())), max(0.0, float(-min(s_edge.min(), s_vert.min())))
+        beyond = float(max(s_vert.max(), s_edge.max()))
+    return max(0.0, beyond), max(0.0, float(-min(s_edge.min(), s_vert.min())))
 
 
 def minimum(arcs, eps):
