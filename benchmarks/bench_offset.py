@@ -18,6 +18,23 @@ Debian's libcgal-dev into ``build/cgal_offset_driver``; simple polygons only, th
 excludes reading the file and process start.
 
 Run: ``python benchmarks/bench_offset.py [--repeat 5] [--quick] [--no-cgal]``
+
+**The ESICUP row** (issue 16), ``--esicup``: every part (piece type) of every ESICUP
+instance in ``../shared/data/esicup``, grown and shrunk by 3 % of its bounding-box
+diagonal, ``r = 0.03·diag``, at the tolerance ``ε = --esicup-rel · r`` (default 1e-3):
+``mk.offset(part, ±r, tolerance=ε)`` (``approx="outer"``, the default, and ``"inner"``)
+against ``shapely.buffer(part, ±r, quad_segs=q)`` at equal error. Equal error, matched by
+measurement: shapely's chords are inscribed in the true arcs, so its error is the
+sagitta, ``r(1 − cos(α/2))`` for a chord of angle α; ``quad_segs`` sets α ≈ 90°/q, but
+GEOS *rounds* the number of chords of each fillet (``round(θ / (90°/q))``), so a fillet
+can get chords up to 1.5× longer and up to 2.25× the nominal error. For each part and
+sign, ``q`` is the smallest value whose result's measured maximum deviation from the
+true offset (both sides, in units of ε, with the GEOS distances of ``errors``) is at
+most ε, searched from the nominal ``ceil(90° / 2·acos(1 − ε/r))``; ours is built to be
+within ε (one-sided) and its measured deviation is printed too. Times: best of
+``--repeat``; ``ratio`` = ours / shapely (sum over the parts of an instance; the total
+line also gives the geometric mean of per-part ratios). Run: ``python
+benchmarks/bench_offset.py --esicup [--instances albano ...] [--esicup-rel 1e-3]``.
 """
 
 from __future__ import annotations
@@ -38,6 +55,7 @@ import minkowski2d as mk
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data" / "cgal-minkowski"
+ESICUP = ROOT.parent / "shared" / "data" / "esicup"
 
 
 def build_driver() -> str | None:
@@ -188,7 +206,10 @@ def best(f, repeat):
 
 def errors(out, P, d):
     """(out, in): how far the boundary of ``out`` reaches beyond / falls inside the true
-    offset's boundary (GEOS float distances)."""
+    offset's boundary (GEOS float distances). Vertices are measured by their distance to
+    ``∂P``, edges by their least distance to it: that is where a chord is farthest from
+    its arc, inside the true set for a grow (``in``) and beyond it for a shrink
+    (``out``: a chord around a reflex vertex of ``P`` comes closer to it than ``r``)."""
     r = abs(d)
     if out.is_empty:
         return math.nan, math.nan
@@ -208,9 +229,11 @@ def errors(out, P, d):
     del ref
     if d > 0:  # signed: positive = beyond the true boundary (outside the true set)
         s_vert, s_edge = dv - r, de - r
+        beyond = float(s_vert.max())
     else:
         s_vert, s_edge = r - dv, r - de
-    return max(0.0, float(s_vert.max())), max(0.0, float(-min(s_edge.min(), s_vert.min())))
+        beyond = float(max(s_vert.max(), s_edge.max()))
+    return max(0.0, beyond), max(0.0, float(-min(s_edge.min(), s_vert.min())))
 
 
 def minimum(arcs, eps):
@@ -227,12 +250,116 @@ def minimum(arcs, eps):
     return tot
 
 
+# --------------------------------------------------------------------------------------
+# the ESICUP row
+
+
+def deviation(out, P, d) -> float:
+    """The measured maximum distance between the boundary of ``out`` and the true
+    offset's, either side (see ``errors``). An empty result counts as exact: a shrink
+    erases a part narrower than 2r (ours, one-sided outside, is empty only then)."""
+    if out.is_empty:
+        return 0.0
+    eo, ei = errors(out, P, d)
+    return max(eo, ei)
+
+
+def equal_error_quad_segs(P, d: float, eps: float) -> int:
+    """The smallest ``quad_segs`` whose ``shapely.buffer(P, d)`` deviates at most ``eps``
+    from the true offset, as measured, searched from the nominal value (``run_shapely``'s
+    formula: exact for chords of exactly 90°/q, which GEOS does not always use)."""
+    r = abs(d)
+    q0 = max(1, math.ceil((math.pi / 2) / (2 * math.acos(max(-1.0, 1 - eps / r)))))
+
+    def ok(q):
+        return deviation(shapely.buffer(P, d, quad_segs=q), P, d) <= eps
+
+    q = q0
+    if ok(q):
+        while q > 1 and ok(q - 1):
+            q -= 1
+        return q
+    while not ok(q):
+        q += 1
+        if q > 4 * q0 + 8:  # GEOS's rounding is bounded by 1.5x: never reached
+            raise RuntimeError(f"no quad_segs up to {q} is within {eps}")
+    return q
+
+
+def esicup(args) -> int:
+    names = args.instances or sorted(p.stem for p in ESICUP.glob("*.json"))
+    if not names:
+        print(f"no ESICUP instances at {ESICUP}")
+        return 1
+    rel = args.esicup_rel
+    print(f"python {sys.version.split()[0]}, shapely {shapely.__version__} "
+          f"(GEOS {shapely.geos_version_string}), best of {args.repeat}")  # fmt: skip
+    print(f"every ESICUP part, distance ±3 % of its bounding-box diagonal, ε = {rel:g}·r; "
+          "shapely's quad_segs: the least within ε, as measured")  # fmt: skip
+    hdr = (f"{'instance':10s} {'sign':>4s} {'parts':>5s} {'outer ms':>9s} {'inner ms':>9s} "
+           f"{'shapely ms':>10s} {'q':>7s} {'outer/shp':>9s} {'inner/shp':>9s} "
+           f"{'ours dev/ε':>10s} {'shp dev/ε':>9s}")  # fmt: skip
+    print(hdr)
+    tot = {"outer": 0.0, "inner": 0.0, "shapely": 0.0}
+    logs = {"outer": [], "inner": []}
+    worst_ours = 0.0
+    for name in names:
+        parts = mk.read_esicup(ESICUP / f"{name}.json")["parts"]
+        for sign in (1, -1):
+            row = {"outer": 0.0, "inner": 0.0, "shapely": 0.0}
+            qs, dev_o, dev_s = [], 0.0, 0.0
+            for P in parts:
+                x0, y0, x1, y1 = P.bounds
+                r = 0.03 * math.hypot(x1 - x0, y1 - y0)
+                d, eps = sign * r, rel * r
+                t_o, res = best(lambda P=P, d=d, eps=eps: mk.offset(P, d, tolerance=eps),
+                                args.repeat)  # fmt: skip
+                dev_o = max(dev_o, deviation(res, P, d) / eps)
+                t_i, _ = best(
+                    lambda P=P, d=d, eps=eps: mk.offset(P, d, tolerance=eps, approx="inner"),
+                    args.repeat,
+                )
+                q = equal_error_quad_segs(P, d, eps)
+                qs.append(q)
+                t_s, res = best(lambda P=P, d=d, q=q: shapely.buffer(P, d, quad_segs=q),
+                                args.repeat)  # fmt: skip
+                dev_s = max(dev_s, deviation(res, P, d) / eps)
+                row["outer"] += t_o
+                row["inner"] += t_i
+                row["shapely"] += t_s
+                logs["outer"].append(math.log(t_o / t_s))
+                logs["inner"].append(math.log(t_i / t_s))
+            for k in tot:
+                tot[k] += row[k]
+            worst_ours = max(worst_ours, dev_o)
+            qr = f"{min(qs)}-{max(qs)}" if min(qs) != max(qs) else str(qs[0])
+            print(f"{name:10s} {'+' if sign > 0 else '-':>4s} {len(parts):5d} "
+                  f"{row['outer'] * 1e3:9.2f} {row['inner'] * 1e3:9.2f} "
+                  f"{row['shapely'] * 1e3:10.2f} {qr:>7s} "
+                  f"{row['outer'] / row['shapely']:9.2f} {row['inner'] / row['shapely']:9.2f} "
+                  f"{dev_o:10.3f} {dev_s:9.3f}", flush=True)  # fmt: skip
+    n = len(logs["outer"])
+    print(f"\ntotal over {n} offsets: ours (outer) {tot['outer']:.3f} s, ours (inner) "
+          f"{tot['inner']:.3f} s, shapely {tot['shapely']:.3f} s; ratio outer/shapely "
+          f"{tot['outer'] / tot['shapely']:.2f}x (geometric mean per offset "
+          f"{math.exp(np.mean(logs['outer'])):.2f}x), inner/shapely "
+          f"{tot['inner'] / tot['shapely']:.2f}x (geometric mean "
+          f"{math.exp(np.mean(logs['inner'])):.2f}x); ours' largest measured deviation "
+          f"{worst_ours:.4f} ε")  # fmt: skip
+    return 0
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--quick", action="store_true", help="1e-2 and 1e-4 only")
     ap.add_argument("--no-cgal", action="store_true", help="skip CGAL")
+    ap.add_argument("--esicup", action="store_true", help="only the ESICUP row (issue 16)")
+    ap.add_argument("--esicup-rel", type=float, default=1e-3, help="ε / r of the ESICUP row")
+    ap.add_argument("--instances", nargs="*", help="ESICUP instances (default: all)")
     args = ap.parse_args(argv)
+    if args.esicup:
+        return esicup(args)
     driver = None if args.no_cgal else build_driver()
     cgal_ratio = []
     rels = (1e-2, 1e-4) if args.quick else (1e-2, 1e-4, 1e-6)
