@@ -304,28 +304,21 @@ struct Step {
   std::int8_t cross;
 };
 
-// Merge the edges of two normalized polygons by angle; write the sum's vertices to out
-// (row-major, room for A.k + B.k rows). Returns the count, or -1 if a float coordinate
-// of the sum overflowed. With `rec`, one Step per merge step is appended.
-template <class T>
-inline i64 merge(const T* pa, const Norm& A, const T* pb, const Norm& B, T* out,
-                 std::vector<Step>* rec = nullptr) {
+// Merge the edges of two normalized polygons by angle: emit(ai, bj) is called for each
+// vertex A[ai] + B[bj] of the sum, in order (at most A.k + B.k of them), and returns false
+// to stop (a float coordinate overflowed). Returns the count, or -1 when stopped. With
+// `rec`, one Step per merge step is appended.
+template <class T, class Emit>
+inline i64 merge_ids(const T* pa, const Norm& A, const T* pb, const Norm& B, Emit&& emit,
+                     std::vector<Step>* rec = nullptr) {
   const i64 na = A.k, nb = B.k;
   const i64 ea = na > 1 ? na : 0, eb = nb > 1 ? nb : 0;
   const i64 sa = A.split < ea ? A.split : ea, sb = B.split < eb ? B.split : eb;
   i64 i = 0, j = 0, k = 0;
   i64 ai = A.at(0), a1 = na > 1 ? A.at(1) : ai;
   i64 bj = B.at(0), b1 = nb > 1 ? B.at(1) : bj;
-  // |a| and |b| below 2^1022 each: no sum can overflow, skip the per-vertex check
-  constexpr u64 SAFE = u64(0x7fd) << 52;
-  const bool check = !(A.maxexp < SAFE && B.maxexp < SAFE);
   while (true) {
-    T x = pa[2 * ai] + pb[2 * bj], y = pa[2 * ai + 1] + pb[2 * bj + 1];
-    out[2 * k] = x;
-    out[2 * k + 1] = y;
-    if constexpr (std::is_floating_point_v<T>) {
-      if (check && (x - x != 0 || y - y != 0)) return -1;
-    }
+    if (!emit(ai, bj)) return -1;
     ++k;
     if (i >= ea && j >= eb) break;
     int step;
@@ -374,6 +367,33 @@ inline i64 merge(const T* pa, const Norm& A, const T* pb, const Norm& B, T* out,
     if (i >= ea && j >= eb) break;
   }
   return k;
+}
+
+// Merge the edges of two normalized polygons by angle; write the sum's vertices to out
+// (row-major, room for A.k + B.k rows). Returns the count, or -1 if a float coordinate
+// of the sum overflowed. With `rec`, one Step per merge step is appended.
+template <class T>
+inline i64 merge(const T* pa, const Norm& A, const T* pb, const Norm& B, T* out,
+                 std::vector<Step>* rec = nullptr) {
+  // |a| and |b| below 2^1022 each: no sum can overflow, skip the per-vertex check
+  constexpr u64 SAFE = u64(0x7fd) << 52;
+  const bool check = !(A.maxexp < SAFE && B.maxexp < SAFE);
+  T* o = out;
+  return merge_ids(
+      pa, A, pb, B,
+      [&](i64 ai, i64 bj) {
+        T x = pa[2 * ai] + pb[2 * bj], y = pa[2 * ai + 1] + pb[2 * bj + 1];
+        o[0] = x;
+        o[1] = y;
+        o += 2;
+        if constexpr (std::is_floating_point_v<T>) {
+          if (check && (x - x != 0 || y - y != 0)) return false;
+        } else {
+          (void)check;
+        }
+        return true;
+      },
+      rec);
 }
 
 // Andrew's monotone chain over p[order] (sorted by x, then y); writes hull indices CCW

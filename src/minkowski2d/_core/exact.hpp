@@ -42,6 +42,7 @@ enum Status : int {
   UNHANDLED = 7,        // input of a kind this fast path does not read (list path)
   SHAPE = 8,            // not an (n, 2) sequence of pairs
   EMPTY = 9,            // no vertices
+  INTERNAL = 10,        // an internal consistency check failed (a bug: please report it)
 };
 
 constexpr double EPS = 1.1102230246251565e-16;                 // 2^-53

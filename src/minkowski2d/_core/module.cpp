@@ -528,6 +528,7 @@ NB_MODULE(_ext, m) {
   m.attr("UNHANDLED") = (int)mk::UNHANDLED;
   m.attr("SHAPE") = (int)mk::SHAPE;
   m.attr("EMPTY") = (int)mk::EMPTY;
+  m.attr("INTERNAL") = (int)mk::INTERNAL;
   m.attr("INT_LIMIT") = (long long)mk::INT_LIMIT;
   m.attr("ERRBOUND") = mk::ERRBOUND;
   m.attr("MINBOUND") = mk::MINBOUND;

@@ -7,6 +7,7 @@
 
 #include "bind.hpp"
 #include "exact.hpp"
+#include "minkowski.hpp"
 #include "overlay.hpp"
 
 namespace nb = nanobind;
@@ -16,48 +17,139 @@ using mk::i64;
 namespace mk_bind {
 namespace {
 
-// (xy (K, 2), ring_off (R + 1,), poly_off (P + 1,)) of an overlay that has run
-nb::tuple overlay_result(const mk::ov::Overlay& o) {
-  return nb::make_tuple(to_numpy(o.out_xy, o.out_xy.size() / 2, 2), to_numpy(o.ring_off, o.ring_off.size(), 0),
-                        to_numpy(o.poly_off, o.poly_off.size(), 0));
+nb::tuple rings_result(const mk::ov::Rings& r) {
+  return nb::make_tuple(to_numpy(r.xy, r.xy.size() / 2, 2), to_numpy(r.ring_off, r.ring_off.size(), 0),
+                        to_numpy(r.poly_off, r.poly_off.size(), 0), r.status);
 }
 
-// overlay_rings(hi (N, 2), lo (N, 2) or empty, ring_off (R + 1,), weight (R,), layer (R,),
-// rule) -> (xy, ring_off, poly_off, status, (pairs, crossings, vertices, edges))
-nb::tuple overlay_rings(In2<double> H, In2<double> L, In1<i64> RO, In1<i64> W, In1<i64> LY,
-                        int rule) {
+// Reads rings (hi (N, 2), lo (N, 2) or (0, 2), ring_off (R + 1,)) into g: one edge list
+// per ring.
+std::vector<std::vector<mk::ov::EdgeIn>> read_rings(mk::ov::Geo& g, In2<double> H, In2<double> L,
+                                                     In1<i64> RO, const i64* w, const i64* ly) {
+  const i64 n = (i64)H.shape(0), nr = (i64)RO.shape(0) - 1;
+  const double* h = H.data();
+  const double* l = L.shape(0) ? L.data() : nullptr;
+  for (i64 i = 0; i < n; ++i) {
+    double lx = l ? l[2 * i] : 0.0, lyv = l ? l[2 * i + 1] : 0.0;
+    g.point(mk::ov::dd_sum(h[2 * i], lx), mk::ov::dd_sum(h[2 * i + 1], lyv));
+  }
+  std::vector<std::vector<mk::ov::EdgeIn>> parts(nr);
+  const i64* ro = RO.data();
+  for (i64 r = 0; r < nr; ++r)
+    mk::ov::add_ring(g, ro[r], ro[r + 1] - ro[r], w ? (int)w[r] : 1, ly ? (int)ly[r] : 0,
+                     parts[r]);
+  return parts;
+}
+
+void check_rings(In2<double> H, In2<double> L, In1<i64> RO) {
   const i64 n = (i64)H.shape(0), nr = (i64)RO.shape(0) - 1;
   if (H.shape(1) != 2) throw nb::value_error("overlay: coordinates must have shape (n, 2)");
-  const bool has_lo = L.shape(0) != 0;
-  if (has_lo && ((i64)L.shape(0) != n || L.shape(1) != 2))
+  if (L.shape(0) != 0 && ((i64)L.shape(0) != n || L.shape(1) != 2))
     throw nb::value_error("overlay: lo must have the shape of hi");
-  if (nr < 0 || (i64)W.shape(0) != nr || (i64)LY.shape(0) != nr)
-    throw nb::value_error("overlay: one weight and one layer per ring");
   const i64* ro = RO.data();
-  if (ro[0] != 0 || ro[nr] != n) throw nb::value_error("overlay: bad ring offsets");
+  if (nr < 0 || ro[0] != 0 || ro[nr] != n) throw nb::value_error("overlay: bad ring offsets");
   for (i64 r = 0; r < nr; ++r)
     if (ro[r + 1] < ro[r]) throw nb::value_error("overlay: bad ring offsets");
   const double* h = H.data();
-  const double* l = has_lo ? L.data() : nullptr;
+  const double* l = L.shape(0) ? L.data() : nullptr;
   for (i64 q = 0; q < 2 * n; ++q)
     if (!(h[q] - h[q] == 0) || (l && !(l[q] - l[q] == 0)))
       throw nb::value_error("overlay: non-finite coordinate");
-  mk::ov::Overlay o;
-  int status;
+}
+
+// overlay_rings(hi, lo, ring_off, weight (R,), layer (R,), rule) -> (xy, ring_off,
+// poly_off, status, (pairs, crossings, vertices, edges)): one flat overlay.
+nb::tuple overlay_rings(In2<double> H, In2<double> L, In1<i64> RO, In1<i64> W, In1<i64> LY,
+                        int rule) {
+  check_rings(H, L, RO);
+  const i64 nr = (i64)RO.shape(0) - 1;
+  if ((i64)W.shape(0) != nr || (i64)LY.shape(0) != nr)
+    throw nb::value_error("overlay: one weight and one layer per ring");
+  mk::ov::Geo g;
+  mk::ov::Overlay o(g);
+  mk::ov::Rings out;
   {
     nb::gil_scoped_release nogil;
-    for (i64 i = 0; i < n; ++i) {
-      double lx = l ? l[2 * i] : 0.0, ly = l ? l[2 * i + 1] : 0.0;
-      // canonical DD: hi = fl(hi + lo)
-      o.add_point(mk::ov::dd_sum(h[2 * i], lx), mk::ov::dd_sum(h[2 * i + 1], ly));
-    }
-    for (i64 r = 0; r < nr; ++r)
-      o.add_ring(ro[r], ro[r + 1] - ro[r], (int)W.data()[r], (int)LY.data()[r]);
-    status = o.run(rule);
+    auto parts = read_rings(g, H, L, RO, W.data(), LY.data());
+    std::vector<mk::ov::EdgeIn> in;
+    for (auto& p : parts) in.insert(in.end(), p.begin(), p.end());
+    o.run(in, rule, out);
   }
-  nb::tuple res = overlay_result(o);
-  return nb::make_tuple(res[0], res[1], res[2], status,
+  nb::tuple res = rings_result(out);
+  return nb::make_tuple(res[0], res[1], res[2], res[3],
                         nb::make_tuple(o.n_pairs, o.n_crossings, o.n_vertices, o.n_edges));
+}
+
+// union_rings(hi, lo, ring_off, leaf) -> (xy, ring_off, poly_off, status, (crossings,
+// runs)): the cascaded union of the rings (each counter-clockwise, weight 1).
+nb::tuple union_rings(In2<double> H, In2<double> L, In1<i64> RO, i64 leaf) {
+  check_rings(H, L, RO);
+  mk::ov::Geo g;
+  mk::ov::Cascade c(g, leaf);
+  mk::ov::Rings out;
+  {
+    nb::gil_scoped_release nogil;
+    auto parts = read_rings(g, H, L, RO, nullptr, nullptr);
+    c.unite(parts, out);
+  }
+  nb::tuple res = rings_result(out);
+  return nb::make_tuple(res[0], res[1], res[2], res[3], nb::make_tuple(c.n_crossings, c.n_runs));
+}
+
+void check_ragged(In2<double> XY, In1<i64> RO, In1<i64> PO) {
+  const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, np = (i64)PO.shape(0) - 1;
+  if (XY.shape(1) != 2) throw nb::value_error("sum: coordinates must have shape (n, 2)");
+  const i64 *ro = RO.data(), *po = PO.data();
+  if (nr < 0 || np < 0 || ro[0] != 0 || ro[nr] != n || po[0] != 0 || po[np] != nr)
+    throw nb::value_error("sum: bad offsets");
+  for (i64 r = 0; r < nr; ++r)
+    if (ro[r + 1] < ro[r]) throw nb::value_error("sum: bad offsets");
+  for (i64 p = 0; p < np; ++p)
+    if (po[p + 1] <= po[p]) throw nb::value_error("sum: bad offsets");
+  for (i64 q = 0; q < 2 * n; ++q)
+    if (!(XY.data()[q] - XY.data()[q] == 0)) throw nb::value_error("sum: non-finite coordinate");
+}
+
+// sum_convolution(A xy, ring_off, poly_off, B xy, ring_off, poly_off) -> (xy, ring_off,
+// poly_off, status, (segments, crossings)): A ⊕ B by the full convolution.
+nb::tuple sum_convolution(In2<double> AX, In1<i64> ARO, In1<i64> APO, In2<double> BX,
+                          In1<i64> BRO, In1<i64> BPO) {
+  check_ragged(AX, ARO, APO);
+  check_ragged(BX, BRO, BPO);
+  mk::ov::Geo g;
+  mk::ov::Overlay o(g);
+  mk::ov::Rings out;
+  i64 nseg = 0;
+  {
+    nb::gil_scoped_release nogil;
+    auto A = mk::ms::read_polygons(AX.data(), ARO.data(), APO.data(), (i64)APO.shape(0) - 1);
+    auto B = mk::ms::read_polygons(BX.data(), BRO.data(), BPO.data(), (i64)BPO.shape(0) - 1);
+    std::vector<mk::ov::EdgeIn> in;
+    mk::ms::convolution(g, A, B, in);
+    nseg = (i64)in.size();
+    o.run(in, mk::ov::UNION, out);
+  }
+  nb::tuple res = rings_result(out);
+  return nb::make_tuple(res[0], res[1], res[2], res[3], nb::make_tuple(nseg, o.n_crossings));
+}
+
+// sum_pieces(pieces of A (coords, offsets), pieces of B, leaf) -> (xy, ring_off,
+// poly_off, status, (crossings, runs)): the cascaded union of all piece sums.
+nb::tuple sum_pieces(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64> OB, i64 leaf) {
+  mk::ov::Geo g;
+  mk::ov::Cascade c(g, leaf);
+  mk::ov::Rings out;
+  int code;
+  {
+    nb::gil_scoped_release nogil;
+    std::vector<std::vector<mk::ov::EdgeIn>> parts;
+    code = mk::ms::piece_sums(g, PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(),
+                              OB.data(), (i64)OB.shape(0) - 1, parts);
+    if (code == mk::OK) c.unite(parts, out);
+  }
+  if (code != mk::OK) out.status = code;
+  nb::tuple res = rings_result(out);
+  return nb::make_tuple(res[0], res[1], res[2], res[3], nb::make_tuple(c.n_crossings, c.n_runs));
 }
 
 }  // namespace
@@ -65,6 +157,13 @@ nb::tuple overlay_rings(In2<double> H, In2<double> L, In1<i64> RO, In1<i64> W, I
 void bind_overlay(nb::module_& m) {
   m.def("overlay_rings", &overlay_rings, "hi"_a.noconvert(), "lo"_a.noconvert(),
         "ring_off"_a.noconvert(), "weight"_a.noconvert(), "layer"_a.noconvert(), "rule"_a);
+  m.def("union_rings", &union_rings, "hi"_a.noconvert(), "lo"_a.noconvert(),
+        "ring_off"_a.noconvert(), "leaf"_a = 4);
+  m.def("sum_convolution", &sum_convolution, "a"_a.noconvert(), "a_ring_off"_a.noconvert(),
+        "a_poly_off"_a.noconvert(), "b"_a.noconvert(), "b_ring_off"_a.noconvert(),
+        "b_poly_off"_a.noconvert());
+  m.def("sum_pieces", &sum_pieces, "pa"_a.noconvert(), "oa"_a.noconvert(), "pb"_a.noconvert(),
+        "ob"_a.noconvert(), "leaf"_a = 4);
   m.attr("OVERLAY_UNION") = (int)mk::ov::UNION;
   m.attr("OVERLAY_DIFFERENCE") = (int)mk::ov::DIFFERENCE;
   m.attr("OVERLAY_INTERSECTION") = (int)mk::ov::INTERSECTION;

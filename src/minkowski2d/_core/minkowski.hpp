@@ -1,0 +1,304 @@
+// minkowski.hpp -- non-convex Minkowski sums on the exact overlay.
+//
+// An operand is a set of polygons with holes (float64 rings, exteriors and holes in any
+// orientation; validated by the caller). Two methods, both ending in one overlay whose
+// rule is "winding number >= 1":
+//
+//  * pieces (decomposition): the sums P_k + Q_l of all pairs of convex pieces, each
+//    from the merge of convex.hpp (merge_ids: the vertex A[i] + B[j] is kept exact as a
+//    TwoSum), united by the cascaded union (overlay.hpp). Every piece sum is a counter-
+//    clockwise ring with winding number 1 inside, so the union is w >= 1.
+//  * convolution: the full convolution of the boundaries (Guibas, Ramshaw and Stolfi's
+//    kinetic framework): for an edge e of one ring and a vertex v of the other, the
+//    segment e + v when e's direction lies in the range of directions the other ring
+//    turns through at v -- forwards when v turns left (convex), backwards when it turns
+//    right (reflex). The winding number of these segments around x is the Euler
+//    characteristic of P ∩ (x − Q): the number of its components when that intersection
+//    has no holes. Holes are made harmless first (Baram, Fogel, Halperin, Hemmer and
+//    Morr 2015): a hole of P that Q cannot fit into (Q's box is not strictly smaller
+//    in both directions) is filled -- it changes nothing -- and a hole Q can fit into
+//    can never be surrounded by x − Q; at most one operand keeps holes. Then w >= 1 is
+//    exactly the sum.
+// A point operand translates the other; a segment operand s gives the union of P, P + d
+// and the parallelograms e + s of P's edges (no decomposition needed).
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "convex.hpp"
+#include "exact.hpp"
+#include "exactnum.hpp"
+#include "overlay.hpp"
+
+namespace mk {
+namespace ms {
+
+using ov::DD;
+using ov::EdgeIn;
+using ov::Geo;
+
+// A ring of an operand: vertex coordinates (x, y pairs), consecutive duplicates removed,
+// inside on the left (exteriors counter-clockwise, holes clockwise).
+struct Ring {
+  std::vector<double> xy;
+  bool hole = false;
+  i64 n() const { return (i64)xy.size() / 2; }
+  double x(i64 i) const { return xy[2 * i]; }
+  double y(i64 i) const { return xy[2 * i + 1]; }
+};
+
+// A polygon: its exterior and holes.
+struct Polygon {
+  Ring ext;
+  std::vector<Ring> holes;
+};
+
+// +1 counter-clockwise, -1 clockwise, 0 no area: the turn at the lowest vertex (x, then y)
+inline int ring_orientation(const double* xy, i64 n) {
+  if (n < 3) return 0;
+  i64 lo = 0;
+  for (i64 i = 1; i < n; ++i)
+    if (xy[2 * i] < xy[2 * lo] || (xy[2 * i] == xy[2 * lo] && xy[2 * i + 1] < xy[2 * lo + 1]))
+      lo = i;
+  i64 p = (lo + n - 1) % n, q = (lo + 1) % n;
+  return cross_sign(xy[2 * p], xy[2 * p + 1], xy[2 * lo], xy[2 * lo + 1], xy[2 * lo],
+                    xy[2 * lo + 1], xy[2 * q], xy[2 * q + 1]);
+}
+
+// A ring from raw coordinates: drop a closing repeat and consecutive duplicates, orient.
+inline Ring make_ring(const double* xy, i64 n, bool hole) {
+  Ring r;
+  r.hole = hole;
+  for (i64 i = 0; i < n; ++i) {
+    double x = xy[2 * i], y = xy[2 * i + 1];
+    i64 m = r.n();
+    if (m > 0 && r.x(m - 1) == x && r.y(m - 1) == y) continue;
+    r.xy.push_back(x);
+    r.xy.push_back(y);
+  }
+  while (r.n() > 1 && r.x(0) == r.x(r.n() - 1) && r.y(0) == r.y(r.n() - 1)) r.xy.resize(r.xy.size() - 2);
+  int o = ring_orientation(r.xy.data(), r.n());
+  if ((o < 0) != hole) {
+    // reverse to put the inside on the left
+    i64 m = r.n();
+    for (i64 i = 0, j = m - 1; i < j; ++i, --j) {
+      std::swap(r.xy[2 * i], r.xy[2 * j]);
+      std::swap(r.xy[2 * i + 1], r.xy[2 * j + 1]);
+    }
+  }
+  return r;
+}
+
+// bounding box of a ring
+struct Box {
+  double x0, x1, y0, y1;
+};
+inline Box ring_box(const Ring& r) {
+  Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (i64 i = 0; i < r.n(); ++i) {
+    b.x0 = std::min(b.x0, r.x(i));
+    b.x1 = std::max(b.x1, r.x(i));
+    b.y0 = std::min(b.y0, r.y(i));
+    b.y1 = std::max(b.y1, r.y(i));
+  }
+  return b;
+}
+// sign of (a1 - a0) - (b1 - b0), exactly
+inline int width_cmp(double a0, double a1, double b0, double b1) {
+  return ((Dy(a1) - Dy(a0)) - (Dy(b1) - Dy(b0))).sign();
+}
+// Can a translate of something with box q fit strictly inside box h? (necessary test)
+inline bool may_fit(const Box& q, const Box& h) {
+  return width_cmp(q.x0, q.x1, h.x0, h.x1) < 0 && width_cmp(q.y0, q.y1, h.y0, h.y1) < 0;
+}
+
+// The rings of an operand for the convolution against the other operand's box: holes
+// the other cannot fit into are filled (dropped).
+inline std::vector<const Ring*> conv_rings(const std::vector<Polygon>& P, const Box& other) {
+  std::vector<const Ring*> out;
+  for (const Polygon& p : P) {
+    out.push_back(&p.ext);
+    for (const Ring& h : p.holes)
+      if (may_fit(other, ring_box(h))) out.push_back(&h);
+  }
+  return out;
+}
+
+inline Box operand_box(const std::vector<Polygon>& P) {
+  Box b{INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (const Polygon& p : P) {
+    Box r = ring_box(p.ext);
+    b.x0 = std::min(b.x0, r.x0);
+    b.x1 = std::max(b.x1, r.x1);
+    b.y0 = std::min(b.y0, r.y0);
+    b.y1 = std::max(b.y1, r.y1);
+  }
+  return b;
+}
+
+// Is direction d (d0 -> d1) in the range a ring turns through at its vertex j (from the
+// incoming edge u to the outgoing v)? `start_open`: the range excludes its start
+// direction and includes its end (edges of the other ring at this ring's vertices use
+// the opposite convention, so that parallel edges pair exactly once). Returns +1 for a
+// left turn (the segment forwards), -1 for a right turn (backwards), 0 not in range.
+struct Dir {
+  double x0, y0, x1, y1;
+};
+inline int cr(const Dir& a, const Dir& b) {
+  return cross_sign(a.x0, a.y0, a.x1, a.y1, b.x0, b.y0, b.x1, b.y1);
+}
+inline int in_range(const Dir& u, const Dir& v, const Dir& d, bool start_open) {
+  int t = cr(u, v);
+  if (t > 0) {
+    // counter-clockwise from u to v (less than a half-turn)
+    int a = cr(u, d), b = cr(d, v);
+    bool in = start_open ? (a > 0 && b >= 0) : (a >= 0 && b > 0);
+    return in ? 1 : 0;
+  }
+  if (t < 0) {
+    // clockwise from u to v: the counter-clockwise range from v to u, ends swapped
+    int a = cr(v, d), b = cr(d, u);
+    bool in = start_open ? (a >= 0 && b > 0) : (a > 0 && b >= 0);
+    return in ? -1 : 0;
+  }
+  return 0;  // straight on (collinear vertex): no turn
+}
+
+// Convolution segments of ring R (edges) with ring S (vertices), appended as edges.
+inline void conv_pair(Geo& g, const Ring& R, const Ring& S, bool start_open,
+                      std::vector<EdgeIn>& out) {
+  const i64 n = R.n(), m = S.n();
+  if (n < 2 || m < 1) return;
+  for (i64 j = 0; j < m; ++j) {
+    i64 jp = (j + m - 1) % m, jn = (j + 1) % m;
+    Dir u{S.x(jp), S.y(jp), S.x(j), S.y(j)}, v{S.x(j), S.y(j), S.x(jn), S.y(jn)};
+    if (cr(u, v) == 0) continue;
+    for (i64 i = 0; i < n; ++i) {
+      i64 in = (i + 1) % n;
+      Dir d{R.x(i), R.y(i), R.x(in), R.y(in)};
+      int s = in_range(u, v, d, start_open);
+      if (!s) continue;
+      i64 a = g.point(ov::dd_sum(R.x(i), S.x(j)), ov::dd_sum(R.y(i), S.y(j)));
+      i64 b = g.point(ov::dd_sum(R.x(in), S.x(j)), ov::dd_sum(R.y(in), S.y(j)));
+      if (ov::p_eq(g.pts[a], g.pts[b])) continue;
+      i64 l = g.line(a, b);
+      i64 va = g.vert_point(a), vb = g.vert_point(b);
+      if (s > 0)
+        out.push_back(EdgeIn{l, va, vb, 1, 0});
+      else
+        out.push_back(EdgeIn{l, vb, va, 1, 0});
+    }
+  }
+}
+
+// The full convolution of two operands (after filling the holes that cannot matter).
+inline void convolution(Geo& g, const std::vector<Polygon>& A, const std::vector<Polygon>& B,
+                        std::vector<EdgeIn>& out) {
+  std::vector<const Ring*> ra = conv_rings(A, operand_box(B)), rb = conv_rings(B, operand_box(A));
+  for (const Ring* r : ra)
+    for (const Ring* s : rb) {
+      conv_pair(g, *r, *s, true, out);   // edges of A at vertices of B
+      conv_pair(g, *s, *r, false, out);  // edges of B at vertices of A
+    }
+}
+
+// All rings of an operand as overlay edges (weight 1: winding 1 inside each polygon),
+// translated by (tx, ty) (exact: DD).
+inline void operand_edges(Geo& g, const std::vector<Polygon>& A, double tx, double ty,
+                          std::vector<EdgeIn>& out) {
+  auto ring = [&](const Ring& r) {
+    i64 first = (i64)g.pts.size();
+    for (i64 i = 0; i < r.n(); ++i) g.point(ov::dd_sum(r.x(i), tx), ov::dd_sum(r.y(i), ty));
+    ov::add_ring(g, first, r.n(), 1, 0, out);
+  };
+  for (const Polygon& p : A) {
+    ring(p.ext);
+    for (const Ring& h : p.holes) ring(h);
+  }
+}
+
+// A ⊕ segment [s0, s1]: A, A + (s1 - s0) (both from s0) and the parallelogram swept by
+// every edge, each a region with winding 1 inside: their union.
+inline void segment_sum(Geo& g, const std::vector<Polygon>& A, double s0x, double s0y,
+                        double s1x, double s1y, std::vector<std::vector<EdgeIn>>& parts) {
+  parts.emplace_back();
+  operand_edges(g, A, s0x, s0y, parts.back());
+  parts.emplace_back();
+  operand_edges(g, A, s1x, s1y, parts.back());
+  auto sweep_ring = [&](const Ring& r) {
+    for (i64 i = 0; i < r.n(); ++i) {
+      i64 in = (i + 1) % r.n();
+      // parallelogram a + s0, b + s0, b + s1, a + s1 (oriented counter-clockwise below)
+      double ax = r.x(i), ay = r.y(i), bx = r.x(in), by = r.y(in);
+      int o = cross_sign(ax, ay, bx, by, s0x, s0y, s1x, s1y);
+      if (o == 0) continue;  // the edge is parallel to the segment: no area
+      i64 first = (i64)g.pts.size();
+      g.point(ov::dd_sum(ax, s0x), ov::dd_sum(ay, s0y));
+      g.point(ov::dd_sum(bx, s0x), ov::dd_sum(by, s0y));
+      g.point(ov::dd_sum(bx, s1x), ov::dd_sum(by, s1y));
+      g.point(ov::dd_sum(ax, s1x), ov::dd_sum(ay, s1y));
+      parts.emplace_back();
+      // (b - a) x (s1 - s0) > 0: a+s0, b+s0, b+s1, a+s1 runs counter-clockwise; else a
+      // weight of -1 gives the clockwise ring winding number 1 inside
+      ov::add_ring(g, first, 4, o > 0 ? 1 : -1, 0, parts.back());
+    }
+  };
+  for (const Polygon& p : A) {
+    sweep_ring(p.ext);
+    for (const Ring& h : p.holes) sweep_ring(h);
+  }
+}
+
+// Convex pieces (ragged: coordinates and offsets) of both operands: all piece sums as
+// rings of exact vertices, one part each.
+inline int piece_sums(Geo& g, const double* pa, const i64* oa, i64 na, const double* pb,
+                      const i64* ob, i64 nb, std::vector<std::vector<EdgeIn>>& parts) {
+  std::vector<Norm> NA(na), NB(nb);
+  i64 big = 1;
+  for (i64 k = 0; k < na; ++k) big = std::max(big, oa[k + 1] - oa[k]);
+  for (i64 k = 0; k < nb; ++k) big = std::max(big, ob[k + 1] - ob[k]);
+  std::vector<i64> keep(big);
+  std::vector<std::int8_t> turn(big);
+  std::vector<i64> ia(oa[na] > 0 ? oa[na] : 1), ib(ob[nb] > 0 ? ob[nb] : 1);
+  for (i64 k = 0; k < na; ++k) {
+    NA[k] = normalize(pa, oa[k], oa[k + 1], keep.data(), turn.data(), ia.data() + oa[k]);
+    if (NA[k].code) return NA[k].code;
+  }
+  for (i64 k = 0; k < nb; ++k) {
+    NB[k] = normalize(pb, ob[k], ob[k + 1], keep.data(), turn.data(), ib.data() + ob[k]);
+    if (NB[k].code) return NB[k].code;
+  }
+  for (i64 k = 0; k < na; ++k)
+    for (i64 l = 0; l < nb; ++l) {
+      i64 first = (i64)g.pts.size();
+      merge_ids(pa, NA[k], pb, NB[l], [&](i64 i, i64 j) {
+        g.point(ov::dd_sum(pa[2 * i], pb[2 * j]), ov::dd_sum(pa[2 * i + 1], pb[2 * j + 1]));
+        return true;
+      });
+      i64 cnt = (i64)g.pts.size() - first;
+      if (cnt < 3) continue;  // a point or a segment: no area
+      parts.emplace_back();
+      ov::add_ring(g, first, cnt, 1, 0, parts.back());
+    }
+  return OK;
+}
+
+// Polygons from ragged arrays: coordinates (N, 2), ring offsets (R + 1), polygon offsets
+// (P + 1) into the rings (the first ring of each polygon is its exterior).
+inline std::vector<Polygon> read_polygons(const double* xy, const i64* ro, const i64* po, i64 np) {
+  std::vector<Polygon> out(np);
+  for (i64 p = 0; p < np; ++p) {
+    for (i64 r = po[p]; r < po[p + 1]; ++r) {
+      Ring ring = make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], r != po[p]);
+      if (r == po[p])
+        out[p].ext = std::move(ring);
+      else
+        out[p].holes.push_back(std::move(ring));
+    }
+  }
+  return out;
+}
+
+}  // namespace ms
+}  // namespace mk
