@@ -64,6 +64,7 @@ def _xy(text: str, name: str) -> tuple[Any, Any]:
 
 
 def _read_scene(source: str) -> Any:
+    from ._foreign import foreign_errors
     from .errors import InputFormatError
 
     try:
@@ -71,12 +72,11 @@ def _read_scene(source: str) -> Any:
     except UnicodeDecodeError:
         raise InputFormatError(f"{source}: not a UTF-8 text file", argument=source) from None
     try:
-        return json.loads(text)
-    except (json.JSONDecodeError, RecursionError) as exc:
-        raise InputFormatError(
-            f"{source}: not JSON ({exc})",
-            argument=source,
-            hint="a scene is a JSON object with obstacles, robot and workspace",
+        with foreign_errors(source, "reading the scene"):
+            return json.loads(text)
+    except InputFormatError as exc:
+        raise exc.renamed(
+            hint="a scene is a JSON object with obstacles, robot and workspace"
         ) from None
 
 
@@ -91,8 +91,9 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         fmt = {"svg": "svg", "geojson": "geojson"}.get(suffix, "json")
     start = _xy(args.start, "start")
     goal = _xy(args.goal, "goal")
+    scene = _read_scene(args.scene)
     try:
-        planner = MotionPlanner.from_scene(_read_scene(args.scene), name=args.scene)
+        planner = MotionPlanner.from_scene(scene, name=args.scene)
     except GeometryError as exc:
         if exc.argument and exc.argument != args.scene:
             raise exc.renamed(f"{args.scene}: {exc.argument}") from None
@@ -106,23 +107,40 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     if fmt == "json":
         text = json.dumps({"path": path.points.tolist(), "length": path.length})
     elif fmt == "geojson":
-        text = json.dumps(geojson(planner, path, start, goal))
+        text = json.dumps(geojson(planner, path, start, goal, _obstacle_properties(scene)))
     else:
         text = svg(planner, path, start, goal)
     emit(text, args.output, [args.scene])
     return 0
 
 
-def geojson(planner: Any, path: Any, start: Any, goal: Any) -> dict:
-    """A FeatureCollection: obstacles, C-obstacles (role properties) and the path."""
+def _obstacle_properties(scene: Any) -> list | None:
+    """The properties of a FeatureCollection scene's obstacle features, in the planner's
+    obstacle order (None for other scenes)."""
+    if not isinstance(scene, dict) or scene.get("type") != "FeatureCollection":
+        return None
+    out = []
+    for f in scene.get("features") or []:
+        props = (f.get("properties") if isinstance(f, dict) else None) or {}
+        if props.get("role", "obstacle") == "obstacle":
+            out.append({k: v for k, v in props.items() if k not in ("role", "index")})
+    return out
+
+
+def geojson(planner: Any, path: Any, start: Any, goal: Any, props: list | None = None) -> dict:
+    """A FeatureCollection: obstacles, C-obstacles (role properties, and the scene
+    features' own properties, kept) and the path."""
     import shapely
+
+    def kept(k: int) -> dict:
+        return props[k] if props is not None and k < len(props) else {}
 
     feats = []
     for k, g in enumerate(planner.obstacles):
         feats.append(
             {
                 "type": "Feature",
-                "properties": {"role": "obstacle", "index": k},
+                "properties": {**kept(k), "role": "obstacle", "index": k},
                 "geometry": json.loads(shapely.to_geojson(g)),
             }
         )
@@ -130,7 +148,7 @@ def geojson(planner: Any, path: Any, start: Any, goal: Any) -> dict:
         feats.append(
             {
                 "type": "Feature",
-                "properties": {"role": "c-obstacle", "index": k},
+                "properties": {**kept(k), "role": "c-obstacle", "index": k},
                 "geometry": json.loads(shapely.to_geojson(g)),
             }
         )
