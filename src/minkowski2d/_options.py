@@ -37,7 +37,6 @@ __all__ = [
     "threads",
     "progress",
     "choice",
-    "flag",
     "integer",
     "real",
     "angle",
@@ -107,15 +106,6 @@ def choice(value: Any, name: str, allowed: Sequence[Any]) -> Any:
         f"{name}: must be one of {text}, got {_repr(value)}",
         argument=name,
         allowed=f"one of {text}",
-    )
-
-
-def flag(value: Any, name: str) -> bool:
-    """A bool option (``hull=``, ``keep_degenerate=``): True or False (numpy bools too)."""
-    if isinstance(value, (bool, np.bool_)):
-        return bool(value)
-    raise OptionError(
-        f"{name}: must be True or False, got {_repr(value)}", argument=name, allowed="a bool"
     )
 
 
