@@ -1395,6 +1395,7 @@ def _trace(
     return polys, verified[0]
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported, not warned about
 def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
     """The exact boundary of a polygon grown (or shrunk) by a disk: segments and arcs.
 

@@ -412,13 +412,17 @@ class MotionPlanner:
         self._obstacle_pieces = opieces
         self.n_obstacles = len(obs)
         neg = [np.ascontiguousarray(-r) for r in rpieces]
+        wgroup = _workspace_groups(wpieces, rpieces)
         As, Bs, groups = [], [], []
         for g, pcs in enumerate([*opieces, wpieces]):
+            ws = g == len(opieces)
+            k = 0
             for a in pcs:
                 for b in neg:
                     As.append(a)
                     Bs.append(b)
-                    groups.append(g)
+                    groups.append(g + wgroup[k] if ws else g)
+                    k += 1
         from .batch import Ragged, minkowski_sum_many
 
         if As:
@@ -675,7 +679,7 @@ class MotionPlanner:
 
     def _point_error(self, which: str, p: tuple, grp: int) -> GeometryError:
         where = f"({_fmt(p[0])}, {_fmt(p[1])})"
-        if grp == -2 or grp == self.n_obstacles:
+        if grp == -2 or grp >= self.n_obstacles:
             e = GeometryError(
                 f"{which}: {where} is outside the workspace (the robot does not fit there)",
                 argument=which,
@@ -847,7 +851,8 @@ class MotionPlanner:
         pl, out = self._route(pts)
         dt = np.int64 if out == "int" else np.float64
         loc = pl._core.locate(np.ascontiguousarray(np.array(pts, dtype=dt).reshape(-1, 2)))
-        return np.asarray(loc, dtype=np.int64)
+        loc = np.asarray(loc, dtype=np.int64)
+        return np.minimum(loc, self.n_obstacles)  # every workspace group is the workspace
 
     # ------------------------------------------------------------------ geometry
     @property
@@ -955,6 +960,47 @@ class MotionPlanner:
             f"MotionPlanner({self.n_obstacles} obstacles, {len(self.pieces)} C-pieces, "
             f"{len(self._core.candidates())} bend candidates, kind={self.kind!r})"
         )
+
+
+def _workspace_groups(wpieces: list, rpieces: list) -> list[int]:
+    """The group (counted from the workspace's first, ``n_obstacles``) of each pair
+    (outside piece, robot piece), in the order the pairs are built.
+
+    A robot with area meets the outside of the workspace exactly when its reference
+    point is in the open interior of one pair's sum: every pair is its own group, so
+    that a corridor of the workspace exactly as wide as the robot stays open (the union
+    of one group's pieces would close it). A point or a segment robot could also slip
+    along a seam between two outside triangles (a point along any seam, a segment along
+    one parallel to it): triangles sharing such an edge form one group, whose union it
+    must avoid (seams blocking)."""
+    nr = len(rpieces)
+    if any(len(r) >= 3 for r in rpieces):
+        return list(range(len(wpieces) * nr))
+    F = Fraction
+    d = None  # the segment robot's direction (exact); None for a point robot
+    if len(rpieces[0]) == 2:
+        (x0, y0), (x1, y1) = rpieces[0].tolist()
+        d = (F(x1) - F(x0), F(y1) - F(y0))
+    parent = list(range(len(wpieces)))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    edges: dict = {}
+    for i, t in enumerate(wpieces):
+        pts = [tuple(v) for v in t.tolist()]
+        for a, b in zip(pts, pts[1:] + pts[:1]):
+            j = edges.pop((b, a), None)  # the same edge the other way round: shared
+            if j is None:
+                edges[(a, b)] = i
+                continue
+            e = (F(b[0]) - F(a[0]), F(b[1]) - F(a[1]))
+            if d is None or e[0] * d[1] == e[1] * d[0]:
+                parent[find(i)] = find(j)
+    return [find(i) for i in range(len(wpieces)) for _ in range(nr)]
 
 
 def _ring_coords(workspace: Any) -> np.ndarray:
