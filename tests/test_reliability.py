@@ -557,3 +557,18 @@ def test_longdouble_never_rounded(k, sign):
         pytest.skip("longdouble is float64 on this platform")
     out = mk.convex_hull(np.array([(v, 0), (3, 0), (0, 3)], dtype=np.longdouble))
     assert Fraction(*v.as_integer_ratio()) in [x for row in out.tolist() for x in row]
+
+
+def test_io_and_helper_options():
+    from minkowski2d.io import format_geometry, parse_cgal_dat
+
+    with pytest.raises(OptionError, match="unknown format") as e:
+        format_geometry(np.array(SQ), "pdf")
+    assert e.value.argument == "fmt"
+    with pytest.raises(OptionError) as e:
+        parse_cgal_dat("3 0 0 1 0 0 1", layout="rings")
+    assert e.value.argument == "layout"
+    for bad in (1, "4", 2.5):
+        with pytest.raises(OptionError):
+            mk.pair_blocks(3, bad)
+    assert mk.pair_blocks(np.int64(2), np.int64(2)) == mk.pair_blocks(2, 2)

@@ -444,6 +444,9 @@ def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list
     >>> [p.tolist() for p in parse_cgal_dat("3 0/1 0/1 1/1 0 0 1  2 5 5 6 6")]
     [[[0, 0], [1, 0], [0, 1]], [[5, 5], [6, 6]]]
     """
+    from . import _options
+
+    _options.choice(layout, "layout", ("auto", "polygons", "pwh"))
     matches = list(re.finditer(r"\S+", text))
     toks = [m.group() for m in matches]
     pos = 0
@@ -620,8 +623,14 @@ def format_geometry(geom: Any, fmt: str = "json") -> str:
     >>> format_geometry(np.array([[1, 2]]), "geojson")
     '{"type": "Point", "coordinates": [1, 2]}'
     """
-    if fmt not in FORMATS:
-        raise ValueError(f"unknown format {fmt!r}; choose one of {', '.join(FORMATS)}")
+    if not isinstance(fmt, str) or fmt not in FORMATS:
+        from .errors import OptionError
+
+        raise OptionError(
+            f"fmt: unknown format {fmt!r}; choose one of {', '.join(FORMATS)}",
+            argument="fmt",
+            allowed=f"one of {', '.join(FORMATS)}",
+        )
     is_array = isinstance(geom, np.ndarray)
     if fmt == "json":
         if is_array:

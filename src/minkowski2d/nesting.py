@@ -830,8 +830,8 @@ def pair_blocks(n: int, size: int) -> list[list[tuple[int, int]]]:
     >>> mk.pair_blocks(3, 4)
     [[(0, 0), (0, 1), (1, 0)], [(0, 2), (2, 0), (1, 1)], [(1, 2), (2, 1), (2, 2)]]
     """
-    if size < 2:
-        raise ValueError(f"size must be at least 2, got {size}")
+    n = _options.integer(n, "n", 0)
+    size = _options.integer(size, "size", 2)
     blocks: list[list[tuple[int, int]]] = [[]]
     for i in range(n):
         for j in range(i, n):
