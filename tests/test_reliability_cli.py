@@ -207,6 +207,26 @@ def test_fuzz_scene_and_instance_files(tmp_path_factory, base, path, value):
         one_line_error(rc, err)
 
 
+# class 2 on the command line: the plan CLI agrees with the library
+
+
+def test_plan_when_lengths_pass_float64(tmp_path):
+    T = [[0.0, 0.0], [1e300, 0.0], [0.0, 1e300]]
+    f = write(tmp_path, "t.json", json.dumps({"obstacles": [T], "robot": T}))
+    rc, out, err = run(["plan", f, "--start=-1e308,-1e308", "--goal", "1e308,1e308"])
+    assert rc == 0, err
+    got = json.loads(out)
+    assert got["length"] is None and "null" in err  # valid path, its length beyond float64
+    assert got["path"][0] == [-1e308, -1e308] and len(got["path"]) == 3
+    rc, out, err = run(["plan", f, "--start=-1e307,-1e307", "--goal", "1e307,1e307"])
+    assert rc == 0, err
+    assert 2.8e307 < json.loads(out)["length"] < 2.9e307
+    rc, _, err = run(
+        ["plan", f, "--start=-1e308,-1e308", "--goal", "1e308,1e308", "--format", "svg"]
+    )
+    one_line_error(rc, err.splitlines()[-1] + "\n", "svg")
+
+
 # --------------------------------------------------------------------------------------
 # class 8: a .dat file with an integer beyond int64
 

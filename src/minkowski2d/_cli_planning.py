@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from typing import Any
 
@@ -105,13 +106,30 @@ def _cmd_plan(args: argparse.Namespace) -> int:
             raise exc.renamed(f"--{exc.argument}") from None
         raise
     if fmt == "json":
-        text = json.dumps({"path": path.points.tolist(), "length": path.length})
+        text = json.dumps({"path": path.points.tolist(), "length": _length(path)})
     elif fmt == "geojson":
         text = json.dumps(geojson(planner, path, start, goal, _obstacle_properties(scene)))
     else:
         text = svg(planner, path, start, goal)
     emit(text, args.output, [args.scene])
     return 0
+
+
+def _length(path: Any, note: bool = True) -> float | None:
+    """The path's length, or None (JSON null) when it does not fit in float64: the path
+    is valid and is written all the same, with a note on standard error."""
+    from .errors import OverflowGeometryError
+
+    try:
+        return path.length
+    except OverflowGeometryError:
+        if note:
+            print(
+                "minkowski2d: note: the path is longer than float64 can hold; its length is "
+                "written as null",
+                file=sys.stderr,
+            )
+        return None
 
 
 def _obstacle_properties(scene: Any) -> list | None:
@@ -159,7 +177,11 @@ def geojson(planner: Any, path: Any, start: Any, goal: Any, props: list | None =
         else {"type": "LineString", "coordinates": pts}
     )
     feats.append(
-        {"type": "Feature", "properties": {"role": "path", "length": path.length}, "geometry": geom}
+        {
+            "type": "Feature",
+            "properties": {"role": "path", "length": _length(path)},
+            "geometry": geom,
+        }
     )
     return {"type": "FeatureCollection", "features": feats}
 
@@ -187,8 +209,18 @@ def svg(planner: Any, path: Any, start: Any, goal: Any) -> str:
         xs.append(np.array([b[0], b[2]]))
         ys.append(np.array([b[1], b[3]]))
     allx, ally = np.concatenate(xs), np.concatenate(ys)
-    x0, x1, y0, y1 = allx.min(), allx.max(), ally.min(), ally.max()
+    x0, x1, y0, y1 = (float(v) for v in (allx.min(), allx.max(), ally.min(), ally.max()))
     w, h = max(x1 - x0, 1e-9), max(y1 - y0, 1e-9)
+    if not (math.isfinite(w) and math.isfinite(h) and math.isfinite(1.1 * max(w, h))):
+        from .errors import OverflowGeometryError
+
+        raise OverflowGeometryError(
+            "svg: the drawing's extent overflows float64",
+            argument="--format",
+            hint="use --format json or geojson at this scale",
+        )
+    L = _length(path, note=False)
+    length = "beyond float64" if L is None else f"{L:.12g}"
     pad = 0.05 * max(w, h)
     sw = 0.004 * max(w, h)
     parts = []
@@ -218,5 +250,5 @@ def svg(planner: Any, path: Any, start: Any, goal: Any) -> str:
     body = "\n  ".join(parts)
     return (
         f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{vb}" width="600" height="600">\n'
-        f"  <title>minkowski2d plan: length {path.length:.12g}</title>\n  {body}\n</svg>"
+        f"  <title>minkowski2d plan: length {length}</title>\n  {body}\n</svg>"
     )
