@@ -572,3 +572,92 @@ def test_io_and_helper_options():
         with pytest.raises(OptionError):
             mk.pair_blocks(3, bad)
     assert mk.pair_blocks(np.int64(2), np.int64(2)) == mk.pair_blocks(2, 2)
+
+
+# --------------------------------------------------------------------------------------
+# classes 5 and 7, open-ended: any junk argument to a public function is a GeometryError
+
+JUNK = [
+    None,
+    5,
+    2.5,
+    math.nan,
+    "abc",
+    b"x",
+    [],
+    [[]],
+    [1, 2],
+    [[1]],
+    [[1, 2, 3]],
+    {"a": 1},
+    object(),
+    True,
+    np.array([]),
+    np.zeros((3, 3)),
+    np.array([[1, 2]], dtype=object),
+    [[None, 1]],
+    [["1", "2"]],
+    shapely.Point(),
+    shapely.GeometryCollection(),
+    shapely.LineString([(0, 0), (1, 1)]),
+    10**400,
+    [(10**400, 0), (0, 1), (1, 1)],
+    [(math.inf, 0), (1, 0), (0, 1)],
+    Fraction(1, 3),
+    [(1j, 0)],
+    -1,
+    0,
+]
+
+CALLS = {
+    "minkowski_sum": lambda x: mk.minkowski_sum(x, SQ),
+    "minkowski_sum_many": lambda x: mk.minkowski_sum_many(x, [SQ]),
+    "convex_hull": lambda x: mk.convex_hull(x),
+    "translate": lambda x: mk.translate(SQ, x),
+    "intersects": lambda x: mk.intersects(x, SQ),
+    "penetration": lambda x: mk.penetration(SQ, x),
+    "contains": lambda x: mk.contains(SQ, x),
+    "intersects_many": lambda x: mk.intersects_many(x, [SQ]),
+    "distance_many": lambda x: mk.distance_many([SQ], x),
+    "minkowski_sum_general": lambda x: mk.minkowski_sum_general(x, L),
+    "minkowski_sum_general_many": lambda x: mk.minkowski_sum_general_many(x, [L]),
+    "minkowski_difference": lambda x: mk.minkowski_difference(L, x),
+    "convex_decomposition": lambda x: mk.convex_decomposition(x),
+    "no_fit_polygons": lambda x: mk.no_fit_polygons(x),
+    "no_fit_polygons part": lambda x: mk.no_fit_polygons([L, x]),
+    "inner_fit_polygon": lambda x: mk.inner_fit_polygon(SQ, x),
+    "rotate_part angle": lambda x: mk.rotate_part(SQ, x),
+    "rotate_part part": lambda x: mk.rotate_part(x, 90),
+    "pair_blocks": lambda x: mk.pair_blocks(x, 2),
+    "offset": lambda x: mk.offset(x, 1),
+    "offset distance": lambda x: mk.offset(SQ, x),
+    "offset tolerance": lambda x: mk.offset(SQ, 1, tolerance=x),
+    "offset miter_limit": lambda x: mk.offset(SQ, 1, join="miter", miter_limit=x),
+    "offset_arcs": lambda x: mk.offset_arcs(x, 1),
+    "MotionPlanner obstacles": lambda x: mk.MotionPlanner(x),
+    "MotionPlanner obstacle": lambda x: mk.MotionPlanner([x]),
+    "MotionPlanner robot": lambda x: mk.MotionPlanner([SQ], robot=x),
+    "MotionPlanner workspace": lambda x: mk.MotionPlanner([SQ], workspace=x),
+    "shortest_path": lambda x: mk.MotionPlanner([SQ]).shortest_path(x, (5, 5)),
+    "shortest_paths": lambda x: mk.MotionPlanner([SQ]).shortest_paths(x, (5, 5)),
+    "is_free": lambda x: mk.MotionPlanner([SQ]).is_free(x),
+    "from_scene": lambda x: mk.MotionPlanner.from_scene(x),
+    "from_scene obstacles": lambda x: mk.MotionPlanner.from_scene({"obstacles": x}),
+    "merge_trace": lambda x: mk.merge_trace(x, SQ),
+    "Ragged coords": lambda x: mk.Ragged(x, [0, 1]),
+    "Ragged offsets": lambda x: mk.Ragged(np.zeros((1, 2)), x),
+    "Ragged.from_list": lambda x: mk.Ragged.from_list(x),
+}
+
+
+@pytest.mark.parametrize("name", list(CALLS))
+def test_junk_arguments_are_geometry_errors(name):
+    import warnings
+
+    for junk in JUNK:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # numpy's own warnings on junk are not the point
+            try:
+                CALLS[name](junk)
+            except GeometryError:
+                pass

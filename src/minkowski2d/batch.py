@@ -116,6 +116,11 @@ class Ragged:
                     argument=nm,
                     vertex=int(vertex),
                 )
+        if not hasattr(polygons, "__iter__") or isinstance(polygons, (str, bytes)):
+            raise ShapeError(
+                f"{name}: expected a sequence of polygons, got {type(polygons).__name__}",
+                argument=name,
+            )
         arrs = []
         for k, p in enumerate(polygons):
             a = (

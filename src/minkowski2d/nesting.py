@@ -41,6 +41,7 @@ from .errors import (
     GeometryError,
     InputFormatError,
     OptionError,
+    ResourceLimitError,
     ShapeError,
 )
 from .general import convex_decomposition, minkowski_difference, minkowski_sum_general_many
@@ -126,7 +127,9 @@ def rotate_part(part: Any, angle: Any) -> Any:
     >>> mk.rotate_part([(0, 0), (2, 0), (2, 1)], 90).tolist()
     [[0, 0], [0, 2], [-1, 2]]
     """
-    if _quarter_turns(angle) == 0:
+    if not type(part).__module__.startswith("shapely"):
+        as_array(part, "part")  # the specific error for a bad ring (the part is kept as is)
+    if _quarter_turns(angle, "angle") == 0:
         return part if type(part).__module__.startswith("shapely") else np.asarray(part)
     return _rotate(part, angle)
 
@@ -818,6 +821,10 @@ def _instance_from_features(fc: Mapping, name: str) -> dict:
     return {"name": fc.get("name", name), "strip": fc.get("strip", {}), "pieces": pieces}
 
 
+#: :func:`pair_blocks` lists at most this many pairs (each a Python tuple in memory).
+MAX_PAIRS = 1 << 32
+
+
 def pair_blocks(n: int, size: int) -> list[list[tuple[int, int]]]:
     """All ordered part-index pairs of ``n`` parts in blocks of at most ``size``.
 
@@ -832,6 +839,12 @@ def pair_blocks(n: int, size: int) -> list[list[tuple[int, int]]]:
     """
     n = _options.integer(n, "n", 0)
     size = _options.integer(size, "size", 2)
+    if n * n > MAX_PAIRS:
+        raise ResourceLimitError(
+            f"n: {n} parts make {n * n} pairs, more than {MAX_PAIRS}",
+            argument="n",
+            hint="split the parts into groups first",
+        )
     blocks: list[list[tuple[int, int]]] = [[]]
     for i in range(n):
         for j in range(i, n):

@@ -200,6 +200,8 @@ def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
     if _is_shapely(obj):
         gt = obj.geom_type
         if gt == "MultiPolygon" or gt == "GeometryCollection":
+            if obj.is_empty:
+                raise EmptyGeometryError(f"{name}: an empty {gt}", argument=name)
             out: list[np.ndarray] = []
             for k, part in enumerate(obj.geoms):
                 out += _pieces(part, f"{name}.geoms[{k}]")[0]
@@ -567,7 +569,13 @@ class MotionPlanner:
                 argument="obstacles",
                 hint="wrap a single polygon in a list: [polygon]",
             )
-        obs = list(obstacles)
+        try:
+            obs = list(obstacles)
+        except TypeError:
+            raise ShapeError(
+                f"obstacles: expected a sequence of polygons, got {type(obstacles).__name__}",
+                argument="obstacles",
+            ) from None
         if obs and isinstance(obs[0], (tuple, list)) and len(obs[0]) == 2:
             first = obs[0]
             if all(isinstance(v, (int, float, np.number, Fraction)) for v in first):
@@ -813,7 +821,14 @@ class MotionPlanner:
             if arr.ndim == 1:
                 return [_point(arr.tolist(), name)]
             return [_point(r, f"{name}[{i}]") for i, r in enumerate(arr.tolist())]
-        seq = list(arr)
+        try:
+            seq = list(arr)
+        except TypeError:
+            raise ShapeError(
+                f"{name}: expected a point (x, y) or a sequence of points, got "
+                f"{type(arr).__name__}",
+                argument=name,
+            ) from None
         if len(seq) == 2 and not hasattr(seq[0], "__len__") and not _is_shapely(seq[0]):
             return [_point(seq, name)]
         return [_point(r, f"{name}[{i}]") for i, r in enumerate(seq)]
