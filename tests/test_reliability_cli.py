@@ -466,3 +466,78 @@ def test_animate_into_a_directory_leaves_nothing(tmp_path):
     with pytest.raises(OSError, match="directory"):
         mk.animate([(0, 0), (2, 0), (0, 2)], SQ, path=tmp_path)
     assert list(tmp_path.iterdir()) == []
+
+
+# --------------------------------------------------------------------------------------
+# class 6, open-ended: every command on odd files exits 0, or 2 with one line
+
+
+def _fc(*feats):
+    return {"type": "FeatureCollection", "features": list(feats)}
+
+
+def _feat(g, p=None):
+    return {"type": "Feature", "geometry": g, "properties": p}
+
+
+def _poly(ring):
+    return {"type": "Polygon", "coordinates": [ring + [ring[0]]]}
+
+
+ODD = [
+    [],
+    [[]],
+    [[0, 0]],
+    [[0, 0], [1, 1]],
+    [[0, 1e308], [1e308, 0], [1, 1]],
+    [[0, 0], [10**400, 0], [0, 1]],
+    {"type": "Polygon", "coordinates": []},
+    {"type": "Polygon", "coordinates": [[[0, 0], [1, 0]]]},
+    _fc(),
+    _fc(_feat(None)),
+    _fc(_feat({"type": "Point", "coordinates": [0, 0]})),
+    _fc(_feat(_poly(L), 5)),
+    _fc(
+        _feat(
+            {
+                "type": "MultiPolygon",
+                "coordinates": [[L + [L[0]]], [[[9, 9], [10, 9], [9, 10], [9, 9]]]],
+            }
+        )
+    ),
+    _fc(_feat(_poly([[0, 0], [2, 2], [2, 0], [0, 2]]))),
+    _fc(_feat({"type": "LineString", "coordinates": [[0, 0], [1, 1]]}), _feat(_poly(SQ))),
+    _fc(_feat(_poly([[0, 0], [1e-320, 0], [0, 1e-320]]))),
+    _fc(_feat(_poly([[0, 0], [1e308, 0], [0, 1e308]]))),
+    "nan",
+    "POLYGON EMPTY",
+    "POLYGON ((0 0, 1 0, 0 1, 0 0))",
+]
+
+
+def test_commands_on_odd_files(tmp_path):
+    sq = write(tmp_path, "sq.json", json.dumps(SQ))
+    for k, doc in enumerate(ODD):
+        name = f"odd{k}.wkt" if isinstance(doc, str) else f"odd{k}.json"
+        f = write(tmp_path, name, doc if isinstance(doc, str) else json.dumps(doc))
+        for cmd in (
+            ["sum", f, sq],
+            ["sum", f, f, "--format", "svg"],
+            ["inflate", f, sq],
+            ["hull", f, "--format", "wkt"],
+            ["collide", f, sq],
+            ["sum-general", f, sq],
+            ["erode", f, sq],
+            ["decompose", f],
+            ["offset", f, "-r", "1"],
+            ["offset", f, "-r", "-1", "--format", "svg"],
+            ["offset", f, "-r", "1e308"],
+            ["animate", f, sq, "-o", "-"],
+            ["plan", f, "--start", "0,0", "--goal", "1,1"],
+            ["nfp", f],
+        ):
+            rc, _, err = run(cmd)
+            assert rc in (0, 2), (cmd, doc, err)
+            if rc == 2:
+                lines = [x for x in err.splitlines() if x.startswith("minkowski2d: error: ")]
+                assert len(lines) == 1 and "Traceback" not in err, (cmd, doc, err)
