@@ -253,6 +253,41 @@ def test_offset_overflow_is_an_error():
 
 
 # --------------------------------------------------------------------------------------
+# the default offset tolerance: 1e-3 |r|, with the one-sided guarantee
+
+
+@pytest.mark.parametrize("r", [2.0, -0.4, 3])
+def test_offset_default_tolerance_keeps_the_guarantee(r):
+    eps, a = 1e-3 * abs(r), abs(r)
+    P = shapely.Polygon(L)
+    ref = P if r > 0 else P.boundary
+    for approx in ("outer", "inner"):
+        g = mk.offset(L, r, approx=approx)
+        assert g.equals(mk.offset(L, r, tolerance=eps, approx=approx))
+        d = shapely.distance(ref, shapely.points(shapely.get_coordinates(g)))
+        # the result's boundary is in the band on the side approx names: beyond the true
+        # boundary for a grow's outer and a shrink's inner result, short of it otherwise
+        lo, hi = (a, a + eps) if (approx == "outer") == (r > 0) else (a - eps, a)
+        assert d.min() >= lo - 1e-12 and d.max() <= hi + 1e-12, (approx, d.min(), d.max())
+    arcs = mk.offset_arcs(L, r)
+    outer, inner = mk.offset(L, r), mk.offset(L, r, approx="inner")
+    assert inner.area <= arcs.area <= outer.area
+
+
+def test_offset_default_tolerance_far_from_the_origin():
+    # 1e-3 * r is below what float64 guarantees at 1e9: the default is raised to it
+    far = [(x + 1e9, y) for x, y in L]
+    g = mk.offset(far, 0.5)
+    assert g.contains(shapely.Polygon(far).buffer(0.5 - 1e-6, quad_segs=64))
+    with pytest.raises(GeometryError) as e:  # a given tolerance is not silently raised
+        mk.offset(far, 0.5, tolerance=5e-4)
+    assert e.value.argument == "tolerance"
+    with pytest.raises(GeometryError) as e:  # nor can a radius below the rounding be met
+        mk.offset(far, 1e-7)
+    assert e.value.argument == "distance"
+
+
+# --------------------------------------------------------------------------------------
 # class 5: foreign exceptions become minkowski2d errors
 
 TINY = 2.0**-540
