@@ -8,7 +8,6 @@ import re
 import signal
 import subprocess
 import sys
-import time
 from fractions import Fraction
 from pathlib import Path
 
@@ -251,26 +250,57 @@ def test_cli_serve_port_in_use(server, capsys):
     assert main(["serve", "0,0 1,0"]) == 2
 
 
+#: only a guard against a hung suite, never what the test waits for: every wait below
+#: ends on an event (a line printed, an answer, the process's exit)
+_GUARD = 600
+
+
 def test_cli_serve_prints_url_and_stops_on_ctrl_c():
+    """Ctrl-C stops the server at once whatever its workers are doing (issue 19): here
+    every worker is held by an upload that never comes, and one more waits in the
+    queue. The test waits for the process to exit, not for a clock: the stalled
+    connections are ended by the stop (their end of stream, no 408, which the server
+    would send only after its 10-second timeout)."""
+    import socket
+
+    from minkowski2d.animation.server import WORKERS
+
     proc = subprocess.Popen(
         [sys.executable, "-m", "minkowski2d", "serve", "--port", "0"],
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
     )
+    stalled = []
     try:
-        line = proc.stdout.readline()
+        line = proc.stdout.readline()  # the event: the server is listening
         m = re.search(r"http://127\.0\.0\.1:(\d+)/", line)
         assert m, line
-        c = http.client.HTTPConnection("127.0.0.1", int(m.group(1)), timeout=10)
+        port = int(m.group(1))
+        c = http.client.HTTPConnection("127.0.0.1", port, timeout=_GUARD)
         c.request("GET", "/")
         assert c.getresponse().status == 200
         c.close()
-        time.sleep(0.1)
+        for _ in range(WORKERS + 1):  # every worker busy, one more in the queue
+            s = socket.create_connection(("127.0.0.1", port), timeout=_GUARD)
+            s.sendall(
+                b"POST /api/trace HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+                b"Content-Type: application/json\r\nContent-Length: 100\r\n\r\n{"
+            )
+            stalled.append(s)
         proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=20)
+        out, err = proc.communicate(timeout=_GUARD)  # returns when the process exits
+        for s in stalled:  # ended by the stop (end of stream or reset), not answered 408
+            try:
+                got = s.recv(65536)
+            except ConnectionError:
+                got = b""
+            assert not got.startswith(b"HTTP/1.1 408"), got
     finally:
+        for s in stalled:
+            s.close()
         if proc.poll() is None:
             proc.kill()
+            proc.wait()
     assert proc.returncode == 0
     assert "Traceback" not in err and "stopped" in err

@@ -60,7 +60,9 @@ def test_errors_are_one_line(files, capsys, tmp_path):
     bow.write_text("[[0,0],[2,2],[2,0],[0,2]]")
     assert main(["erode", str(bow), files["unit"]]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("minkowski2d: error: a: not a valid polygon") and err.count("\n") == 1
+    # the message names the file (issue 19: the CLI names files, not Python arguments)
+    assert err.startswith(f"minkowski2d: error: {bow}: not a valid polygon")
+    assert err.count("\n") == 1
 
 
 def test_refuses_to_overwrite_input(files, capsys):

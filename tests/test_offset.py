@@ -316,9 +316,8 @@ def test_errors():
     with pytest.raises(GeometryError) as e:
         mk.offset(SQUARE, 1, tolerance=0)
     assert e.value.argument == "tolerance" and e.value.hint
-    with pytest.raises(GeometryError) as e:
-        mk.offset(SQUARE, 1, tolerance=None)
-    assert e.value.argument == "tolerance"
+    # no tolerance: the documented default, 1e-3 * |r| (issue 19), not an error
+    assert mk.offset(SQUARE, 1).equals(mk.offset(SQUARE, 1, tolerance=1e-3))
     with pytest.raises(GeometryError) as e:
         mk.offset(SQUARE, float("nan"), tolerance=1)
     assert e.value.argument == "distance"
@@ -502,9 +501,11 @@ def test_cli_offset(tmp_path, capsys):
     # DXF in: the shrunk square read back and grown again
     assert main(["offset", str(out), "-r", "0.5", "--join", "miter", "--format", "wkt"]) == 0
     assert shapely.from_wkt(capsys.readouterr().out).equals(shapely.box(0, 0, 4, 4))
-    # a round join without tolerance cannot be written as a polygon: one line, status 2
-    assert main(["offset", str(src), "-r", "1", "--format", "wkt"]) == 2
-    assert "tolerance" in capsys.readouterr().err
+    # a round join without tolerance: the default tolerance, 1e-3 * |r| (issue 19)
+    assert main(["offset", str(src), "-r", "1", "--format", "wkt"]) == 0
+    got = shapely.from_wkt(capsys.readouterr().out)
+    want = mk.offset([(0, 0), (4, 0), (4, 4), (0, 4)], 1, tolerance=1e-3)
+    assert got.area == want.area and got.hausdorff_distance(want) < 1e-12
 
 
 @settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -174,6 +174,58 @@ class TestLocalServer:
             srv.shutdown()
             srv.server_close()
 
+    def test_413_from_content_length_alone(self):
+        """A declared body over the cap is answered at once, before any byte of it is
+        sent (issue 19): the server does not wait for the body (here it would wait an
+        hour); the client's socket guard is never what the test waits for."""
+        srv = make_server(port=0, timeout=3600.0)
+        srv.start_thread()
+        port = srv.server_address[1]
+        try:
+            for n in (MAX_BODY + 1, 2 * MAX_BODY, 99 * MAX_BODY):
+                with socket.create_connection(("127.0.0.1", port), timeout=600) as s:
+                    s.sendall(
+                        b"POST /api/trace HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+                        b"Content-Type: application/json\r\nContent-Length: %d\r\n\r\n" % n
+                    )
+                    head = b""
+                    while b"\r\n\r\n" not in head:
+                        chunk = s.recv(65536)
+                        assert chunk, head
+                        head += chunk
+                    assert head.startswith(b"HTTP/1.1 413") and b"Connection: close" in head
+            # a client still sending its (oversized) body also reads the 413
+            st, _, body = post(srv, b" " * (3 * MAX_BODY))
+            assert st == 413 and "too large" in error_of(body)["message"]
+        finally:
+            srv.shutdown()
+            srv.server_close()
+
+    def test_stop_ends_open_connections(self):
+        """AnimationServer.stop ends every open connection at once, whatever the worker
+        is doing (here: waiting for a body that never comes, for an hour)."""
+        srv = make_server(port=0, timeout=3600.0)
+        t = srv.start_thread()
+        port = srv.server_address[1]
+        s = socket.create_connection(("127.0.0.1", port), timeout=600)
+        try:
+            s.sendall(
+                b"POST /api/trace HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+                b"Content-Type: application/json\r\nContent-Length: 100\r\n\r\n{"
+            )
+            # the worker holds the connection once the server answers a second client
+            assert post(srv, GOOD)[0] == 200
+            srv.shutdown()
+            t.join()
+            srv.stop()
+            try:
+                got = s.recv(65536)
+            except ConnectionError:
+                got = b""
+            assert got == b""  # ended, not answered
+        finally:
+            s.close()
+
     def test_defaults(self):
         assert WORKERS <= 16
         srv = make_server(port=0)

@@ -30,6 +30,9 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         help="intersection test: boundary walk of A ⊕ (−B), exact GJK, or auto (default)",
     )
     p.add_argument("-o", "--output", help="output file (default: standard output)")
+    from ._cli_common import add_arc_option
+
+    add_arc_option(p)
     p.set_defaults(func=_cmd_collide)
 
 
@@ -51,22 +54,13 @@ def _convex_input(g: Any, name: str) -> Any:
     return g
 
 
-def _cmd_collide(args: argparse.Namespace) -> int:
-    from ._cli_common import CLI_HULL_HINT, emit, renamed_error
+def _collide(a: Any, b: Any, args: argparse.Namespace) -> dict:
     from .collision import distance, intersects, penetration
-    from .errors import NotConvexError
-    from .io import read_geometry
 
-    a = _convex_input(read_geometry(args.a), args.a)
-    b = _convex_input(read_geometry(args.b), args.b)
-    try:
-        hit = intersects(a, b, method=args.method, hull=args.hull)
-        d = distance(a, b, hull=args.hull)
-        p = penetration(a, b, hull=args.hull)
-    except NotConvexError as exc:
-        # name the file and the option rather than the Python argument
-        raise renamed_error(exc, {"a": args.a, "b": args.b}, hull_hint=CLI_HULL_HINT) from None
-    out = {
+    hit = intersects(a, b, method=args.method, hull=args.hull)
+    d = distance(a, b, hull=args.hull)
+    p = penetration(a, b, hull=args.hull)
+    return {
         "intersects": hit,
         "distance": {
             "distance": d.distance,
@@ -80,5 +74,33 @@ def _cmd_collide(args: argparse.Namespace) -> int:
             "point_b": _xy(p.point_b),
         },
     }
+
+
+def _cmd_collide(args: argparse.Namespace) -> int:
+    import numpy as np
+
+    from ._cli_common import CLI_HULL_HINT, emit, renamed_error
+    from ._cli_features import run_collection
+    from .errors import NotConvexError
+    from .io import read_geometry
+
+    def op(geoms: list, names: list) -> Any:
+        # one feature per pair: the properties of both, the results, and as geometry the
+        # distance's witness segment (a point where the polygons meet)
+        res = _collide(_convex_input(geoms[0], names[0]), _convex_input(geoms[1], names[1]), args)
+        d = res["distance"]
+        seg = np.array([d["point_a"], d["point_b"]])
+        return (seg[:1] if d["point_a"] == d["point_b"] else seg), res
+
+    files = [args.a, args.b]
+    if (status := run_collection(args, files, op, fmt="geojson")) is not None:
+        return status
+    a = _convex_input(read_geometry(args.a), args.a)
+    b = _convex_input(read_geometry(args.b), args.b)
+    try:
+        out = _collide(a, b, args)
+    except NotConvexError as exc:
+        # name the file and the option rather than the Python argument
+        raise renamed_error(exc, {"a": args.a, "b": args.b}, hull_hint=CLI_HULL_HINT) from None
     emit(json.dumps(out, indent=2), args.output, [args.a, args.b])
     return 0

@@ -22,7 +22,8 @@ import os
 import stat
 import sys
 import tempfile
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -33,10 +34,12 @@ __all__ = [
     "emit",
     "write_output",
     "add_io_options",
+    "add_arc_option",
     "output_format",
     "format_error",
     "renamed_error",
     "same_file",
+    "files_named",
 ]
 
 #: the API hint the library puts in NotConvexError messages, and its command-line form
@@ -155,7 +158,7 @@ def emit(text: str, output: str | None, inputs: Iterable[str] = ()) -> None:
 
 
 def add_io_options(p: argparse.ArgumentParser) -> None:
-    """``-o/--output`` and ``--format``."""
+    """``-o/--output``, ``--format`` and ``--arc-tolerance``."""
     from .io import FORMATS
 
     p.add_argument("-o", "--output", help="output file (default: standard output)")
@@ -164,6 +167,19 @@ def add_io_options(p: argparse.ArgumentParser) -> None:
         choices=FORMATS,
         default=None,
         help="output format (default: from the -o suffix, else json)",
+    )
+    add_arc_option(p)
+
+
+def add_arc_option(p: argparse.ArgumentParser) -> None:
+    """``--arc-tolerance``: how DXF arcs are read (see :func:`minkowski2d.io.read_dxf`)."""
+    p.add_argument(
+        "--arc-tolerance",
+        type=float,
+        default=None,
+        metavar="EPS",
+        help="DXF input: arcs become polygons containing the part (parts grow, holes "
+        "shrink) within EPS drawing units (default: 1e-3 times each arc's radius)",
     )
 
 
@@ -216,6 +232,18 @@ def renamed_error(
         out.argument = prefix
         return out
     return exc.renamed(exc.argument, hint, hint_in_message)
+
+
+@contextmanager
+def files_named(names: Mapping[str, str]) -> Iterator[None]:
+    """Context manager: a GeometryError whose ``argument`` is a Python argument name in
+    ``names`` (``{"a": "part.json"}``) is raised naming the file instead."""
+    try:
+        yield
+    except GeometryError as exc:
+        if exc.argument in names:
+            raise renamed_error(exc, names, hull_hint=CLI_HULL_HINT) from None
+        raise
 
 
 def _one_line(s: str) -> str:

@@ -23,11 +23,12 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable
 from typing import Any
 
 from ._cli_common import CLIError, emit, output_format
 
-__all__ = ["run_features", "add_parser"]
+__all__ = ["run_features", "run_collection", "write_collection", "arc_tolerance", "add_parser"]
 
 
 def _is_general(g: Any, name: str) -> bool:
@@ -51,9 +52,15 @@ def _neg(g: Any) -> Any:
 
 
 def _op(cmd: str, a: Any, b: Any, hull: bool, names: tuple[str, str]) -> Any:
+    import numpy as np
+
     from . import convex, general
 
     if cmd == "hull":
+        if not isinstance(a, np.ndarray):  # holes or several parts: the hull of all
+            import shapely
+
+            a = shapely.get_coordinates(a)
         return convex.convex_hull(a)
     if cmd == "inflate":
         if not hull and (_is_general(a, names[0]) or _is_general(b, names[1])):
@@ -75,13 +82,55 @@ def _inputs(args: argparse.Namespace, cmd: str) -> list[str]:
 def run_features(args: argparse.Namespace, cmd: str) -> int | None:
     """Run ``cmd`` (``sum``, ``inflate``, ``hull``) on collections; None when no input
     is a FeatureCollection or a DXF drawing."""
-    from .errors import GeometryError, ShapeError
-    from .io import Feature, format_geometry, read_features, read_geometry
+    hull = bool(getattr(args, "hull", False))
 
-    files = _inputs(args, cmd)
+    def op(geoms: list, names: list) -> Any:
+        b = geoms[1] if len(geoms) > 1 else None
+        return _op(cmd, geoms[0], b, hull, (names[0], names[-1]))
+
+    return run_collection(args, _inputs(args, cmd), op)
+
+
+#: the Python argument names errors carry, by input position (first or second file)
+_ARGS = (
+    ("a", "obstacle", "points", "polygon", "poly", "container", "A"),
+    ("b", "robot", "B", "part"),
+)
+
+
+def arc_tolerance(args: argparse.Namespace) -> float | None:
+    """The ``--arc-tolerance`` of a command (None where it has none)."""
+    return getattr(args, "arc_tolerance", None)
+
+
+def run_collection(
+    args: argparse.Namespace,
+    files: list[str],
+    op: Callable[[list, list], Any],
+    *,
+    writer: Callable[[list, str], str | None] | None = None,
+    fmt: str | None = None,
+) -> int | None:
+    """Run ``op`` once per feature when an input is a GeoJSON FeatureCollection or a DXF
+    drawing (else None: the command reads single polygons as before).
+
+    ``op(geometries, names)`` gets one geometry per input file (a collection's feature,
+    or the single polygon of the other file, broadcast) and their names
+    (``file: features[k]``), and returns the result geometry, or ``(geometry, extra
+    properties)``. Features are paired in order (two collections need equal lengths); a
+    null geometry gives a null result; the properties (and ``id``) of the features are
+    kept, the first file's winning. Every result is computed before anything is written
+    (a bad feature: exit status 2, naming it; no partial output). ``writer(results,
+    fmt)``, when given, writes formats of its own (``dxf``, an exact ``svg``; None: the
+    default), else :func:`write_collection` does; ``fmt`` defaults to ``--format`` or
+    the ``-o`` suffix."""
+    from .errors import GeometryError, ShapeError
+    from .io import Feature, read_features, read_geometry
+
     if any(f == "-" for f in files):
         return None  # standard input is read once, by the single-polygon path
-    feats = [read_features(f) for f in files]
+    tol = arc_tolerance(args)
+    feats = [read_features(f, arc_tolerance=tol) for f in files]
     if all(f is None for f in feats):
         return None
     counts = {len(f) for f in feats if f is not None}
@@ -93,16 +142,15 @@ def run_features(args: argparse.Namespace, cmd: str) -> int | None:
         )
     n = counts.pop()
     cols = [
-        f if f is not None else [Feature(read_geometry(path), None, {})] * n
+        f if f is not None else [Feature(read_geometry(path, arc_tolerance=tol), None, {})] * n
         for f, path in zip(feats, files)
     ]
-    hull = bool(getattr(args, "hull", False))
     out = []
     for k in range(n):
         parts = [c[k] for c in cols]
-        names = tuple(
+        names = [
             f"{path}: features[{k}]" if f is not None else path for f, path in zip(feats, files)
-        )
+        ]
         props: dict | None = None
         extra: dict = {}
         for p, f in zip(parts, feats):
@@ -113,23 +161,38 @@ def run_features(args: argparse.Namespace, cmd: str) -> int | None:
         if any(p.geometry is None for p in parts):
             out.append((None, props, extra))
             continue
-        a = parts[0].geometry
-        b = parts[1].geometry if len(parts) > 1 else None
         try:
-            res = _op(cmd, a, b, hull, (names[0], names[-1]))
+            res = op([p.geometry for p in parts], names)
         except GeometryError as exc:
             raise _name(exc, names) from None
+        if isinstance(res, tuple):
+            res, more = res
+            props = {**(props or {}), **more}
         out.append((res, props, extra))
-    fmt = output_format(args)
-    emit(_format(out, fmt, format_geometry), args.output, files)
+    fmt = fmt or output_format(args)
+    text = writer(out, fmt) if writer is not None else None
+    if text is None:
+        text = write_collection(out, fmt)
+    emit(text, args.output, files)
     return 0
 
 
-def _name(exc: Any, names: tuple) -> Any:
+def write_collection(out: list, fmt: str) -> str:
+    """The results ``(geometry or None, properties, extra)`` as a FeatureCollection
+    (``json``, ``geojson``), one WKT per line (``wkt``) or one SVG drawing (``svg``)."""
+    from .io import format_geometry
+
+    return _format(out, fmt, format_geometry)
+
+
+def _name(exc: Any, names: Any) -> Any:
     from ._cli_common import CLI_HULL_HINT, renamed_error
 
-    mapping = {"a": names[0], "b": names[-1], "obstacle": names[0], "robot": names[-1]}
-    mapping["points"] = names[0]
+    mapping = dict.fromkeys(_ARGS[0], names[0])
+    mapping.update(dict.fromkeys(_ARGS[1], names[-1]))
+    mapping["a, b"] = ", ".join(dict.fromkeys(names))
+    if exc.argument in names:  # already named
+        return renamed_error(exc, hull_hint=CLI_HULL_HINT, hint_in_message=True)
     if exc.argument in mapping:
         return renamed_error(exc, mapping, hull_hint=CLI_HULL_HINT, hint_in_message=True)
     return renamed_error(exc, prefix=names[0], hull_hint=CLI_HULL_HINT, hint_in_message=True)

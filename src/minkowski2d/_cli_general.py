@@ -55,40 +55,68 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
 
 
 def _cmd_sum_general(args: argparse.Namespace) -> int:
-    from ._cli_common import emit, output_format
+    from ._cli_common import emit, files_named, output_format
+    from ._cli_features import run_collection
     from .general import minkowski_sum_general
     from .io import format_geometry, read_geometry
 
+    def op(g: list, names: list) -> object:
+        return minkowski_sum_general(
+            g[0], g[1], method=args.method, decomposition=args.decomposition
+        )
+
+    if (status := run_collection(args, [args.a, args.b], op)) is not None:
+        return status
     a = read_geometry(args.a)
     b = read_geometry(args.b)
-    result = minkowski_sum_general(a, b, method=args.method, decomposition=args.decomposition)
+    with files_named({"a": args.a, "b": args.b, "a, b": f"{args.a}, {args.b}"}):
+        result = minkowski_sum_general(a, b, method=args.method, decomposition=args.decomposition)
     emit(format_geometry(result, output_format(args)), args.output, [args.a, args.b])
     return 0
 
 
 def _cmd_erode(args: argparse.Namespace) -> int:
-    from ._cli_common import emit, output_format
+    from ._cli_common import emit, files_named, output_format
+    from ._cli_features import run_collection
     from .general import minkowski_difference
     from .io import format_geometry, read_geometry
 
+    def op(g: list, names: list) -> object:
+        return minkowski_difference(g[0], g[1])
+
+    if (status := run_collection(args, [args.a, args.b], op)) is not None:
+        return status
     a = read_geometry(args.a)
     b = read_geometry(args.b)
-    result = minkowski_difference(a, b)
+    with files_named({"a": args.a, "b": args.b, "a, b": f"{args.a}, {args.b}"}):
+        result = minkowski_difference(a, b)
     if result.is_empty:
         print("minkowski2d: note: B fits nowhere inside A; the erosion is empty", file=sys.stderr)
     emit(format_geometry(result, output_format(args)), args.output, [args.a, args.b])
     return 0
 
 
-def _cmd_decompose(args: argparse.Namespace) -> int:
+def _pieces_geom(poly: object, method: str) -> object:
     import shapely
 
-    from ._cli_common import emit, output_format
     from .general import convex_decomposition
+
+    pieces = convex_decomposition(poly, method=method)
+    polys = [p for p in pieces.to_shapely() if p.geom_type == "Polygon"]
+    return shapely.MultiPolygon(polys) if polys else shapely.MultiPolygon()
+
+
+def _cmd_decompose(args: argparse.Namespace) -> int:
+    from ._cli_common import emit, files_named, output_format
+    from ._cli_features import run_collection
     from .io import format_geometry, read_geometry
 
-    pieces = convex_decomposition(read_geometry(args.polygon), method=args.method)
-    polys = [p for p in pieces.to_shapely() if p.geom_type == "Polygon"]
-    geom = shapely.MultiPolygon(polys) if polys else shapely.MultiPolygon()
+    def op(g: list, names: list) -> object:
+        return _pieces_geom(g[0], args.method)
+
+    if (status := run_collection(args, [args.polygon], op)) is not None:
+        return status
+    with files_named({"poly": args.polygon}):
+        geom = _pieces_geom(read_geometry(args.polygon), args.method)
     emit(format_geometry(geom, output_format(args)), args.output, [args.polygon])
     return 0

@@ -44,6 +44,7 @@ def _cmd_nfp(args: argparse.Namespace) -> int:
         fmt = "geojson" if str(args.output or "").lower().endswith(".geojson") else "json"
     inst = read_esicup(args.instance)
     parts, rots = inst["parts"], inst["rotations"]
+    props = inst.get("properties") or [None] * len(parts)
     nfps = no_fit_polygons(
         parts,
         rotations=rots,
@@ -68,14 +69,22 @@ def _cmd_nfp(args: argparse.Namespace) -> int:
         feats = [
             {
                 "type": "Feature",
-                "properties": {"kind": "nfp", "i": i, "ri": ri, "j": j, "rj": rj},
+                "properties": {
+                    "kind": "nfp",
+                    "i": i,
+                    "ri": ri,
+                    "j": j,
+                    "rj": rj,
+                    **_kept(props, i, "a"),
+                    **_kept(props, j, "b"),
+                },
                 "geometry": json.loads(shapely.to_geojson(g)),
             }
             for (i, ri, j, rj), g in nfps.items()
         ] + [
             {
                 "type": "Feature",
-                "properties": {"kind": "ifp", "i": i, "r": r},
+                "properties": {"kind": "ifp", "i": i, "r": r, **_kept(props, i, "part")},
                 "geometry": json.loads(shapely.to_geojson(g)),
             }
             for i, r, g in ifps
@@ -105,3 +114,8 @@ def _cmd_nfp(args: argparse.Namespace) -> int:
         )
     emit(text, args.output, [args.instance])
     return 0
+
+
+def _kept(props: list, i: int, key: str) -> dict:
+    """The properties of part ``i`` (a FeatureCollection instance), under ``key``."""
+    return {key: props[i]} if props[i] is not None else {}

@@ -20,18 +20,29 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         "offset",
         help="grow (r > 0) or shrink (r < 0) a polygon by a disk, with a guaranteed error",
         description="Offset a polygon by a disk of radius |r|. json/geojson/wkt write a "
-        "polygon within --tolerance of the true offset, on the side --approx names (outer: "
-        "it contains the true set). svg and dxf write the exact boundary, with circular "
-        "arcs (a round join), unless --tolerance is given. DXF input (closed LWPOLYLINEs) "
-        "needs the optional ezdxf package.",
+        "polygon within --tolerance (default 1e-3 |r|) of the true offset, on the side "
+        "--approx names (outer: it contains the true set). svg and dxf write the exact "
+        "boundary, with circular arcs (a round join), unless --tolerance is given. "
+        "GeoJSON FeatureCollections and DXF drawings give one result per feature (part), "
+        "properties kept. DXF input (polylines with arcs, circles, line and arc chains) "
+        "needs the optional ezdxf package; its arcs are read within --arc-tolerance.",
     )
     p.add_argument("polygon", help="the polygon (file or -; .dxf files need ezdxf)")
     p.add_argument("-r", "--distance", type=float, required=True, help="offset distance")
-    p.add_argument("--tolerance", type=float, default=None, help="largest error (round join)")
+    p.add_argument(
+        "--tolerance",
+        type=float,
+        default=None,
+        help="largest error of a round join (default: 1e-3 times |r|; svg and dxf then "
+        "write exact arcs)",
+    )
     p.add_argument("--approx", choices=("outer", "inner"), default="outer")
     p.add_argument("--join", choices=("round", "miter", "square"), default="round")
     p.add_argument("--miter-limit", type=float, default=2.0)
     p.add_argument("-o", "--output", help="output file (default: standard output)")
+    from ._cli_common import add_arc_option
+
+    add_arc_option(p)
     p.add_argument(
         "--format",
         choices=FORMATS,
@@ -48,78 +59,66 @@ def _format(args: argparse.Namespace) -> str:
     return {".wkt": "wkt", ".geojson": "geojson", ".svg": "svg", ".dxf": "dxf"}.get(suffix, "json")
 
 
-def read_dxf(source: str) -> Any:
-    """Closed LWPOLYLINE / POLYLINE entities of a DXF file as one shapely geometry
-    (nested rings alternate between outline and hole)."""
-    import numpy as np
+def read_dxf(source: str, tolerance: float | None = None) -> Any:
+    """The parts of a DXF drawing (:func:`minkowski2d.io.read_dxf`: closed polylines,
+    circles, line and arc chains; nested outlines are holes; arcs within ``tolerance``)
+    as one shapely geometry."""
     import shapely
 
-    from .errors import InputFormatError
+    from .io import read_dxf as read
 
-    try:
-        import ezdxf
-    except ImportError:
-        raise InputFormatError(
-            f"{source}: reading DXF needs ezdxf",
-            argument=source,
-            hint="pip install 'minkowski2d[dxf]'",
-        ) from None
-    try:
-        doc = ezdxf.readfile(source)
-    except (OSError, ezdxf.DXFError) as exc:
-        raise InputFormatError(f"{source}: cannot read DXF ({exc})", argument=source) from None
-    rings = []
-    for e in doc.modelspace().query("LWPOLYLINE POLYLINE"):
-        if e.dxftype() == "LWPOLYLINE":
-            pts = np.array([(x, y) for x, y, *_ in e.get_points("xyb")], float)
-            bulges = [b for *_, b in e.get_points("xyb")]
-            closed = e.closed
-        else:
-            pts = np.array([(v.dxf.location.x, v.dxf.location.y) for v in e.vertices], float)
-            bulges = [v.dxf.bulge for v in e.vertices]
-            closed = e.is_closed
-        if any(b != 0 for b in bulges):
-            raise InputFormatError(
-                f"{source}: a polyline has arcs (bulges); only straight edges are read",
-                argument=source,
-                hint="flatten the arcs in your CAD program first",
-            )
-        if closed and len(pts) >= 3:
-            rings.append(shapely.Polygon(pts))
-    if not rings:
-        raise InputFormatError(
-            f"{source}: no closed polyline with three or more vertices", argument=source
-        )
-    rings.sort(key=lambda g: -abs(g.area))
-    g = rings[0]
-    for h in rings[1:]:
-        g = shapely.symmetric_difference(g, h)
-    return g
+    geoms = []
+    for f in read(source, tolerance=tolerance):
+        g = f.geometry
+        geoms.append(g if not hasattr(g, "ndim") else shapely.Polygon(g))
+    return geoms[0] if len(geoms) == 1 else shapely.MultiPolygon(geoms)
 
 
 def _cmd_offset(args: argparse.Namespace) -> int:
-    from .cli import CLIError, emit
+    from ._cli_common import emit
+    from ._cli_features import run_collection
+    from .errors import GeometryError
     from .io import format_geometry, read_geometry
-    from .offset import offset, offset_arcs
 
     src = args.polygon
-    poly = read_dxf(src) if src.lower().endswith(".dxf") else read_geometry(src)
     fmt = _format(args)
     exact = fmt in ("svg", "dxf") and args.join == "round" and args.tolerance is None
+
+    def op(g: list, names: list) -> Any:
+        return _offset(g[0], args, exact)
+
+    def writer(out: list, fmt: str) -> str | None:
+        if fmt not in ("svg", "dxf"):
+            return None
+        done = [g for g, _, _ in out if g is not None]
+        return _text(done, fmt, exact, args.distance)
+
+    if (status := run_collection(args, [src], op, writer=writer, fmt=fmt)) is not None:
+        return status
+    try:
+        result = _offset(read_geometry(src), args, exact)
+    except GeometryError as exc:
+        if exc.argument == "polygon":  # name the file
+            raise exc.renamed(src) from None
+        raise
+    if fmt in ("svg", "dxf"):
+        text = _text([result], fmt, exact, args.distance)
+    else:
+        text = format_geometry(result, fmt)
+    emit(text, args.output, [src])
+    return 0
+
+
+def _offset(poly: Any, args: argparse.Namespace, exact: bool) -> Any:
+    """The offset of one polygon: exact arcs (OffsetArcs) for an exact SVG or DXF, else
+    a polygon within the tolerance (the default one when none is given)."""
+    from .offset import offset, offset_arcs
+
     if exact:
         arcs = offset_arcs(poly, args.distance)
         if not arcs.polygons:
             print("minkowski2d: note: the shrink erases the polygon", file=sys.stderr)
-        if fmt == "svg":
-            text = arcs.to_svg()
-        else:
-            buf = io.StringIO()
-            arcs.to_dxf().write(buf)
-            text = buf.getvalue()
-        emit(text, args.output, [src])
-        return 0
-    if args.join == "round" and args.tolerance is None:
-        raise CLIError("--tolerance is needed for a polygon output with a round join")
+        return arcs
     result = offset(
         poly,
         args.distance,
@@ -130,12 +129,31 @@ def _cmd_offset(args: argparse.Namespace) -> int:
     )
     if result.is_empty:
         print("minkowski2d: note: the shrink erases the polygon", file=sys.stderr)
+    return result
+
+
+def _text(results: list, fmt: str, exact: bool, distance: float) -> str:
+    """SVG or DXF of offset results: exact arcs, or polygons."""
+    import numpy as np
+    import shapely
+
+    if exact:
+        from .offset import OffsetArcs
+
+        arcs = OffsetArcs([p for r in results for p in r.polygons], distance)
+        if fmt == "svg":
+            return arcs.to_svg()
+        buf = io.StringIO()
+        arcs.to_dxf().write(buf)
+        return buf.getvalue()
+    parts = shapely.get_parts(np.array(results, dtype=object))
+    parts = parts[~shapely.is_empty(parts)]
+    geom = parts[0] if len(parts) == 1 else shapely.MultiPolygon(list(parts))
     if fmt == "dxf":
-        text = _polygon_dxf(result)
-    else:
-        text = format_geometry(result, fmt)
-    emit(text, args.output, [src])
-    return 0
+        return _polygon_dxf(geom)
+    from .io import format_geometry
+
+    return format_geometry(geom, fmt)
 
 
 def _polygon_dxf(geom: Any) -> str:

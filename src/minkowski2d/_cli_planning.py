@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from typing import Any
 
@@ -64,6 +65,7 @@ def _xy(text: str, name: str) -> tuple[Any, Any]:
 
 
 def _read_scene(source: str) -> Any:
+    from ._foreign import foreign_errors
     from .errors import InputFormatError
 
     try:
@@ -71,12 +73,11 @@ def _read_scene(source: str) -> Any:
     except UnicodeDecodeError:
         raise InputFormatError(f"{source}: not a UTF-8 text file", argument=source) from None
     try:
-        return json.loads(text)
-    except (json.JSONDecodeError, RecursionError) as exc:
-        raise InputFormatError(
-            f"{source}: not JSON ({exc})",
-            argument=source,
-            hint="a scene is a JSON object with obstacles, robot and workspace",
+        with foreign_errors(source, "reading the scene"):
+            return json.loads(text)
+    except InputFormatError as exc:
+        raise exc.renamed(
+            hint="a scene is a JSON object with obstacles, robot and workspace"
         ) from None
 
 
@@ -91,8 +92,9 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         fmt = {"svg": "svg", "geojson": "geojson"}.get(suffix, "json")
     start = _xy(args.start, "start")
     goal = _xy(args.goal, "goal")
+    scene = _read_scene(args.scene)
     try:
-        planner = MotionPlanner.from_scene(_read_scene(args.scene), name=args.scene)
+        planner = MotionPlanner.from_scene(scene, name=args.scene)
     except GeometryError as exc:
         if exc.argument and exc.argument != args.scene:
             raise exc.renamed(f"{args.scene}: {exc.argument}") from None
@@ -104,25 +106,59 @@ def _cmd_plan(args: argparse.Namespace) -> int:
             raise exc.renamed(f"--{exc.argument}") from None
         raise
     if fmt == "json":
-        text = json.dumps({"path": path.points.tolist(), "length": path.length})
+        text = json.dumps({"path": path.points.tolist(), "length": _length(path)})
     elif fmt == "geojson":
-        text = json.dumps(geojson(planner, path, start, goal))
+        text = json.dumps(geojson(planner, path, start, goal, _obstacle_properties(scene)))
     else:
         text = svg(planner, path, start, goal)
     emit(text, args.output, [args.scene])
     return 0
 
 
-def geojson(planner: Any, path: Any, start: Any, goal: Any) -> dict:
-    """A FeatureCollection: obstacles, C-obstacles (role properties) and the path."""
+def _length(path: Any, note: bool = True) -> float | None:
+    """The path's length, or None (JSON null) when it does not fit in float64: the path
+    is valid and is written all the same, with a note on standard error."""
+    from .errors import OverflowGeometryError
+
+    try:
+        return path.length
+    except OverflowGeometryError:
+        if note:
+            print(
+                "minkowski2d: note: the path is longer than float64 can hold; its length is "
+                "written as null",
+                file=sys.stderr,
+            )
+        return None
+
+
+def _obstacle_properties(scene: Any) -> list | None:
+    """The properties of a FeatureCollection scene's obstacle features, in the planner's
+    obstacle order (None for other scenes)."""
+    if not isinstance(scene, dict) or scene.get("type") != "FeatureCollection":
+        return None
+    out = []
+    for f in scene.get("features") or []:
+        props = (f.get("properties") if isinstance(f, dict) else None) or {}
+        if props.get("role", "obstacle") == "obstacle":
+            out.append({k: v for k, v in props.items() if k not in ("role", "index")})
+    return out
+
+
+def geojson(planner: Any, path: Any, start: Any, goal: Any, props: list | None = None) -> dict:
+    """A FeatureCollection: obstacles, C-obstacles (role properties, and the scene
+    features' own properties, kept) and the path."""
     import shapely
+
+    def kept(k: int) -> dict:
+        return props[k] if props is not None and k < len(props) else {}
 
     feats = []
     for k, g in enumerate(planner.obstacles):
         feats.append(
             {
                 "type": "Feature",
-                "properties": {"role": "obstacle", "index": k},
+                "properties": {**kept(k), "role": "obstacle", "index": k},
                 "geometry": json.loads(shapely.to_geojson(g)),
             }
         )
@@ -130,7 +166,7 @@ def geojson(planner: Any, path: Any, start: Any, goal: Any) -> dict:
         feats.append(
             {
                 "type": "Feature",
-                "properties": {"role": "c-obstacle", "index": k},
+                "properties": {**kept(k), "role": "c-obstacle", "index": k},
                 "geometry": json.loads(shapely.to_geojson(g)),
             }
         )
@@ -141,7 +177,11 @@ def geojson(planner: Any, path: Any, start: Any, goal: Any) -> dict:
         else {"type": "LineString", "coordinates": pts}
     )
     feats.append(
-        {"type": "Feature", "properties": {"role": "path", "length": path.length}, "geometry": geom}
+        {
+            "type": "Feature",
+            "properties": {"role": "path", "length": _length(path)},
+            "geometry": geom,
+        }
     )
     return {"type": "FeatureCollection", "features": feats}
 
@@ -169,8 +209,18 @@ def svg(planner: Any, path: Any, start: Any, goal: Any) -> str:
         xs.append(np.array([b[0], b[2]]))
         ys.append(np.array([b[1], b[3]]))
     allx, ally = np.concatenate(xs), np.concatenate(ys)
-    x0, x1, y0, y1 = allx.min(), allx.max(), ally.min(), ally.max()
+    x0, x1, y0, y1 = (float(v) for v in (allx.min(), allx.max(), ally.min(), ally.max()))
     w, h = max(x1 - x0, 1e-9), max(y1 - y0, 1e-9)
+    if not (math.isfinite(w) and math.isfinite(h) and math.isfinite(1.1 * max(w, h))):
+        from .errors import OverflowGeometryError
+
+        raise OverflowGeometryError(
+            "svg: the drawing's extent overflows float64",
+            argument="--format",
+            hint="use --format json or geojson at this scale",
+        )
+    L = _length(path, note=False)
+    length = "beyond float64" if L is None else f"{L:.12g}"
     pad = 0.05 * max(w, h)
     sw = 0.004 * max(w, h)
     parts = []
@@ -200,5 +250,5 @@ def svg(planner: Any, path: Any, start: Any, goal: Any) -> str:
     body = "\n  ".join(parts)
     return (
         f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{vb}" width="600" height="600">\n'
-        f"  <title>minkowski2d plan: length {path.length:.12g}</title>\n  {body}\n</svg>"
+        f"  <title>minkowski2d plan: length {length}</title>\n  {body}\n</svg>"
     )

@@ -62,6 +62,28 @@ def _kind_of_scalar(v: Any, name: str, k: int) -> str:
     )
 
 
+def _wide(v: Any) -> bool:
+    """A numpy float wider than float64 (longdouble): it may hold values float64 cannot."""
+    return isinstance(v, np.floating) and v.dtype.itemsize > 8
+
+
+def _exact_wide(arr: np.ndarray, name: str) -> tuple[list, str] | None:
+    """A longdouble array whose values float64 cannot all hold, as exact Fractions (kind
+    ``"exact"``: never rounded); None when every value is a float64 value."""
+    with np.errstate(all="ignore"):
+        a = arr.astype(np.float64)
+        same = (a.astype(arr.dtype) == arr) | ~np.isfinite(arr)
+    if same.all():
+        return None
+    if not np.isfinite(arr).all():
+        bad = int(np.flatnonzero(~np.isfinite(arr).all(axis=1))[0])
+        raise NonFiniteError(
+            f"{name}: vertex {bad} has a non-finite coordinate", argument=name, vertex=bad
+        )
+    F = Fraction
+    return [(F(*x.as_integer_ratio()), F(*y.as_integer_ratio())) for x, y in arr], EXACT
+
+
 def _shapely_coords(obj: Any, name: str) -> np.ndarray | None:
     """Vertices of a shapely geometry, or None if ``obj`` is not one."""
     mod = type(obj).__module__
@@ -134,6 +156,11 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
         ky = _kind_of_scalar(y, name, k)
         vals = []
         for v, kv in ((x, kx), (y, ky)):
+            if kv == FLOAT and _wide(v):
+                # a longdouble (or wider) value float64 cannot hold: kept exact
+                f = float(v)
+                if f - f == 0 and f != v:
+                    v, kv = Fraction(*v.as_integer_ratio()), EXACT
             if kv == FLOAT:
                 v = float(v)
                 if v - v:
@@ -204,6 +231,8 @@ def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray
             hint="give a sequence of (x, y) pairs",
         )
     dk = arr.dtype.kind
+    if dk == "f" and arr.dtype.itemsize > 8 and (wide := _exact_wide(arr, name)) is not None:
+        return wide
     if dk == "f":
         a = arr.astype(np.float64, copy=False)
         # ``check_finite=False``: the caller's own range pass (convex._fits_kernel) checks
@@ -244,7 +273,13 @@ def coerce(obj: Any, name: str, tiny: int) -> tuple[Any, str, bool]:
     if (t is list or t is tuple) and len(obj) <= tiny:
         pts, kind = py_points(obj, name)
         return pts, kind, True
-    if t is np.ndarray and obj.ndim == 2 and obj.shape[0] <= tiny and obj.dtype.kind in "if":
+    if (
+        t is np.ndarray
+        and obj.ndim == 2
+        and obj.shape[0] <= tiny
+        and obj.dtype.kind in "if"
+        and obj.dtype.itemsize <= 8
+    ):
         if obj.shape[1] != 2:
             raise ShapeError(f"{name}: expected shape (n, 2), got {obj.shape}")
         if obj.shape[0] == 0:

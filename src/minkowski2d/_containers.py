@@ -158,11 +158,9 @@ class Progress:
 
 def check_progress(progress: Any) -> None:
     """Raise for a ``progress=`` value that is not None, a bool or a callable."""
-    if progress is None or isinstance(progress, bool) or callable(progress):
-        return
-    raise TypeError(
-        f"progress must be True, False, None or a callable cb(done, total), not {progress!r}"
-    )
+    from . import _options
+
+    _options.progress(progress)
 
 
 def _is_many(x: Any) -> bool:

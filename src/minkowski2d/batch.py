@@ -9,17 +9,20 @@ take and return.
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
+from fractions import Fraction
 from functools import partial
 from typing import Any, SupportsIndex, overload
 
 import numpy as np
 
 from . import _dispatch as D
+from . import _options
 from ._coerce import as_array
 from ._containers import apply, boxed
 from ._core import _ext
 from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
+    CoordinateTypeError,
     EmptyGeometryError,
     NonFiniteError,
     NotConvexError,
@@ -27,6 +30,13 @@ from .errors import (
 )
 
 __all__ = ["Ragged", "minkowski_sum_many", "as_ragged_pair"]
+
+
+def _is_real(v: Any) -> bool:
+    return isinstance(v, (int, float, Fraction, np.integer, np.floating)) and not isinstance(
+        v, (bool, np.bool_)
+    )
+
 
 _OK = int(D.Status.OK)
 _NONFINITE = int(D.Status.NONFINITE)
@@ -58,7 +68,25 @@ class Ragged:
 
     def __init__(self, coords: np.ndarray, offsets: np.ndarray) -> None:
         coords = np.asarray(coords)
-        offsets = np.asarray(offsets, dtype=np.int64)
+        if coords.dtype.kind not in "iuf" and not (
+            coords.dtype.kind == "O" and all(_is_real(v) for v in coords.ravel().tolist())
+        ):
+            raise CoordinateTypeError(
+                f"Ragged: coords of dtype {coords.dtype} are not real numbers",
+                argument="coords",
+                hint="give an (N, 2) int64 or float64 array",
+            )
+        raw = np.asarray(offsets)
+        if raw.dtype.kind not in "iu":
+            finite = raw.dtype.kind == "f" and np.isfinite(raw).all()
+            whole = finite and (raw == np.floor(raw)).all()
+            if not (whole or raw.size == 0):
+                raise ShapeError(
+                    f"Ragged: offsets must be integers, got dtype {raw.dtype}",
+                    argument="offsets",
+                    hint="offsets are vertex indices: 0, then each polygon's end",
+                )
+        offsets = raw.astype(np.int64) if raw.size else np.zeros(0, np.int64)
         if coords.ndim != 2 or coords.shape[1] != 2:
             raise ShapeError(f"Ragged: coords must have shape (N, 2), got {coords.shape}")
         if offsets.ndim != 1 or offsets.size == 0 or offsets[0] != 0 or offsets[-1] != len(coords):
@@ -88,9 +116,21 @@ class Ragged:
                     argument=nm,
                     vertex=int(vertex),
                 )
+        if not hasattr(polygons, "__iter__") or isinstance(polygons, (str, bytes)):
+            raise ShapeError(
+                f"{name}: expected a sequence of polygons, got {type(polygons).__name__}",
+                argument=name,
+            )
         arrs = []
         for k, p in enumerate(polygons):
-            a = p if type(p) is np.ndarray and p.ndim == 2 and p.dtype.kind in "if" else None
+            a = (
+                p
+                if type(p) is np.ndarray
+                and p.ndim == 2
+                and p.dtype.kind in "if"
+                and p.dtype.itemsize <= 8
+                else None
+            )
             if a is None or a.shape[1] != 2 or a.shape[0] == 0:
                 a, kind = as_array(p, f"{name}[{k}]")
                 if isinstance(a, list):
@@ -524,8 +564,7 @@ def minkowski_sum_many(
     >>> out.index.tolist(), out.crs.to_epsg(), out[7].wkt, out[9]
     ([7, 9], 3857, 'POLYGON ((0 0, 2 0, 3 1, 3 2, 1 2, 0 1, 0 0))', None)
     """
-    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
-        raise ValueError(f"threads must be a positive int, got {threads!r}")
+    threads = _options.threads(threads)
     if progress is not None or boxed(As) or boxed(Bs):
         return apply(partial(minkowski_sum_many, threads=threads), As, Bs, progress=progress)
     RA, a_lo, a_hi, RB, b_lo, b_hi, P, names = as_ragged_pair(As, Bs)

@@ -194,6 +194,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt:
         return 130
+    except Exception as exc:  # the last line of defence: foreign errors from bad data
+        from ._foreign import translate
+
+        err = translate(exc, "", "running the command")
+        if err is None:
+            raise  # a bug: keep the traceback
+        print(format_error(err), file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":  # pragma: no cover

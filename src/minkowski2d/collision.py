@@ -37,7 +37,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _exact
+from . import _exact, _options
 from ._coerce import INT, as_array
 from ._containers import apply, boxed
 from ._core import _ext
@@ -145,9 +145,7 @@ def _raise(code: int, name: str, vertex: int) -> None:
 
 
 def _threads(threads: Any) -> int:
-    if isinstance(threads, bool) or not isinstance(threads, int | np.integer) or threads < 1:
-        raise ValueError(f"threads must be a positive int, not {threads!r}")
-    return int(threads)
+    return _options.threads(threads)
 
 
 def _pair(a: Any, b: Any, mode: int, hull: bool) -> tuple[bool, np.ndarray]:
@@ -231,8 +229,7 @@ def intersects(a: ArrayLike2, b: ArrayLike2, *, method: str = "auto", hull: bool
     >>> mk.intersects(square, [(3, 0), (4, 0), (4, 1)], method="gjk")
     False
     """
-    if method not in _METHODS:
-        raise ValueError(f"method must be 'auto', 'sum' or 'gjk', not {method!r}")
+    method = _options.choice(method, "method", tuple(_METHODS))
     hit, _ = _pair(a, b, _METHODS[method], hull)
     return hit
 
@@ -449,8 +446,7 @@ def intersects_many(
         return apply(
             partial(intersects_many, method=method, threads=threads), As, Bs, progress=progress
         )
-    if method not in _METHODS:
-        raise ValueError(f"method must be 'auto', 'sum' or 'gjk', not {method!r}")
+    method = _options.choice(method, "method", tuple(_METHODS))
     hit, _ = _batch(As, Bs, _METHODS[method], threads)
     return hit
 

@@ -29,6 +29,7 @@ __all__ = [
     "InputFormatError",
     "NoPathError",
     "ResourceLimitError",
+    "OptionError",
 ]
 
 
@@ -111,6 +112,9 @@ class GeometryError(ValueError):
             msg = f"{msg} ({hint})"
         new = type(self).__new__(type(self))
         GeometryError.__init__(new, msg, argument=arg, vertex=self.vertex, hint=hint)
+        for k, v in vars(self).items():  # extra fields (``allowed``, ``obstacle``, ...)
+            if k not in ("argument", "vertex", "hint"):
+                setattr(new, k, v)
         return new
 
     def to_dict(self) -> dict[str, object]:
@@ -186,3 +190,42 @@ class NoPathError(GeometryError):
 
 class ResourceLimitError(GeometryError):
     """The computation would exceed a stated bound on work or memory."""
+
+
+class OptionError(GeometryError, TypeError):
+    """An option (a keyword argument such as ``threads``, ``method``, ``join``,
+    ``rotations``, ``progress``) has a value of the wrong type or out of range.
+
+    Like numpy's ``AxisError`` (a ValueError and an IndexError), it is both a
+    :class:`ValueError` (through :class:`GeometryError`) and a :class:`TypeError`, so
+    ``except GeometryError``, ``except ValueError`` and ``except TypeError`` all catch it.
+    ``argument`` (also ``option``) names the option and ``allowed`` says what it takes.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> try:
+    ...     mk.minkowski_sum_many([[(0, 0)]], [[(1, 1)]], threads=0)
+    ... except mk.errors.OptionError as exc:
+    ...     print(exc.option, "|", exc.allowed)
+    threads | an int from 1 to 1024
+    """
+
+    allowed: str | None = None
+
+    def __init__(
+        self,
+        message: str = "",
+        *args: object,
+        argument: str | None = None,
+        allowed: str | None = None,
+        hint: str | None = None,
+        vertex: int | None = None,
+    ) -> None:
+        super().__init__(message, *args, argument=argument, vertex=vertex, hint=hint)
+        self.allowed = allowed
+
+    @property
+    def option(self) -> str | None:
+        """The option at fault (the same as ``argument``)."""
+        return self.argument

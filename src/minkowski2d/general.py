@@ -43,6 +43,7 @@ from typing import Any
 
 import numpy as np
 
+from . import _options
 from ._coerce import as_array
 from ._geos import area_parts, boundary, checked_polygonal
 from .batch import Ragged, minkowski_sum_many
@@ -470,8 +471,7 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
     >>> len(mk.convex_decomposition(L, method="triangulation"))
     4
     """
-    if method not in DECOMPOSITIONS:
-        raise ValueError(f"method must be one of {DECOMPOSITIONS}, got {method!r}")
+    method = _options.choice(method, "method", DECOMPOSITIONS)
     k, (P,) = _operands((poly, "poly"))
     with _boundary("poly", "decomposing the polygon"):
         R = _pieces(P, method)
@@ -827,10 +827,8 @@ def minkowski_sum_general(
     >>> mk.minkowski_sum_general(L, L, method="convolution").wkt
     'POLYGON ((0 0, 4 0, 4 2, 3 2, 3 3, 2 3, 2 4, 0 4, 0 0))'
     """
-    if method is not None and method not in SUM_METHODS:
-        raise ValueError(f"method must be one of {SUM_METHODS}, got {method!r}")
-    if decomposition not in DECOMPOSITIONS:
-        raise ValueError(f"decomposition must be one of {DECOMPOSITIONS}, got {decomposition!r}")
+    method = _options.choice(method, "method", (None, *SUM_METHODS))
+    decomposition = _options.choice(decomposition, "decomposition", DECOMPOSITIONS)
     k, (A, B) = _operands((a, "a"), (b, "b"))
     with _boundary("a, b", "computing the sum"):
         r = _result(_sum(A, B, method, decomposition))
@@ -982,10 +980,9 @@ def minkowski_sum_general_many(
     >>> [g.area for g in out]
     [13.0, 8.0]
     """
-    if method not in ("auto",) + SUM_METHODS:
-        raise ValueError(f"method must be one of {('auto',) + SUM_METHODS}, got {method!r}")
-    if isinstance(threads, bool) or not isinstance(threads, int) or threads < 1:
-        raise ValueError(f"threads must be a positive int, got {threads!r}")
+    method = _options.choice(method, "method", ("auto", *SUM_METHODS))
+    threads = _options.threads(threads)
+    progress = _options.progress(progress)
     from ._containers import apply, boxed
 
     if boxed(As) or boxed(Bs):

@@ -33,8 +33,17 @@ from typing import Any
 
 import numpy as np
 
+from . import _options
+from ._coerce import as_array
 from .batch import minkowski_sum_many
-from .errors import GeometryError, InputFormatError
+from .errors import (
+    EmptyGeometryError,
+    GeometryError,
+    InputFormatError,
+    OptionError,
+    ResourceLimitError,
+    ShapeError,
+)
 from .general import convex_decomposition, minkowski_difference, minkowski_sum_general_many
 
 __all__ = [
@@ -51,14 +60,11 @@ __all__ = [
 # rotations
 
 
-def _quarter_turns(angle: Any) -> int | None:
+def _quarter_turns(angle: Any, name: str = "rotations") -> int | None:
     """Number of quarter turns (0..3) when ``angle`` (degrees) is a multiple of 90."""
     if type(angle) is int:  # the common case, without a Fraction
         return None if angle % 90 else (angle // 90) % 4
-    try:
-        f = Fraction(angle)
-    except (TypeError, ValueError) as exc:
-        raise ValueError(f"a rotation must be a number of degrees, got {angle!r}") from exc
+    f = Fraction(_options.angle(angle, name))
     if f.denominator != 1 or f.numerator % 90:
         return None
     return (f.numerator // 90) % 4
@@ -121,13 +127,19 @@ def rotate_part(part: Any, angle: Any) -> Any:
     >>> mk.rotate_part([(0, 0), (2, 0), (2, 1)], 90).tolist()
     [[0, 0], [0, 2], [-1, 2]]
     """
-    if _quarter_turns(angle) == 0:
+    if not type(part).__module__.startswith("shapely"):
+        as_array(part, "part")  # the specific error for a bad ring (the part is kept as is)
+    if _quarter_turns(angle, "angle") == 0:
         return part if type(part).__module__.startswith("shapely") else np.asarray(part)
     return _rotate(part, angle)
 
 
 def _rot_float(c: np.ndarray, angle: Any) -> np.ndarray:
-    t = math.radians(float(angle))
+    # reduced modulo a full turn first, exactly (math.fmod is exact for floats; ints and
+    # Fractions as Fractions), so that huge angles neither overflow nor lose their value
+    a = _options.angle(angle, "rotations")
+    a = math.fmod(a, 360.0) if isinstance(a, float) else float(Fraction(a) % 360)
+    t = math.radians(a)
     cs, sn = math.cos(t), math.sin(t)
     return np.stack([cs * c[:, 0] - sn * c[:, 1], sn * c[:, 0] + cs * c[:, 1]], axis=-1)
 
@@ -148,21 +160,63 @@ def _rotate_geoms(geoms: np.ndarray, quarter: int) -> np.ndarray:
 
 def _rotations_per_part(rotations: Any, n: int) -> list[tuple]:
     """One tuple of angles per part (``rotations`` is shared or given per part)."""
-    if isinstance(rotations, (int, float, Fraction)):
+    allowed = "a sequence of angles in degrees, or one such sequence per part"
+    if isinstance(rotations, (int, float, Fraction, np.number)) and not isinstance(
+        rotations, (bool, np.bool_)
+    ):
         rotations = (rotations,)
-    rot = list(rotations)
+    rot = _options.sequence(rotations, "rotations", allowed)
     if rot and all(isinstance(r, (list, tuple, np.ndarray)) for r in rot):
         if len(rot) != n:
-            raise ValueError(f"rotations: {len(rot)} sequences for {n} parts")
-        out = [tuple(r) for r in rot]
+            raise OptionError(
+                f"rotations: {len(rot)} sequences for {n} parts",
+                argument="rotations",
+                allowed=f"one sequence of angles per part ({n})",
+            )
+        out = [tuple(_options.sequence(r, f"rotations[{i}]", allowed)) for i, r in enumerate(rot)]
+        names = [f"rotations[{i}]" for i in range(n)]
     else:
         out = [tuple(rot)] * n
+        names = ["rotations"] * n
+    if not out and not rot:
+        raise OptionError(
+            "rotations: no rotation allowed", argument="rotations", allowed="at least one angle"
+        )
     for i, r in enumerate(out):
         if not r:
-            raise ValueError(f"rotations[{i}]: no rotation allowed for part {i}")
-        for a in r:
-            _quarter_turns(a)  # type check
+            raise OptionError(
+                f"rotations[{i}]: no rotation allowed for part {i}",
+                argument=f"rotations[{i}]",
+                allowed="at least one angle",
+            )
+        for k, a in enumerate(r):
+            _quarter_turns(a, f"{names[i]}[{k}]")  # type check
     return out
+
+
+def _pair_index(pr: Any, k: int, n: int) -> tuple[int, int]:
+    """One ``(i, j)`` of ``pairs=``: two part indices (ints, numpy ints too) in range."""
+    allowed = f"(i, j) pairs of part indices from 0 to {n - 1}"
+    try:
+        i, j = pr
+    except (TypeError, ValueError):
+        raise OptionError(
+            f"pairs[{k}]: expected an (i, j) pair of part indices, got {pr!r}",
+            argument=f"pairs[{k}]",
+            allowed=allowed,
+        ) from None
+    out = []
+    for v in (i, j):
+        if not _options.is_int(v) or not 0 <= int(v) < n:
+            raise OptionError(
+                f"pairs[{k}]: part index {v!r} out of range for {n} parts"
+                if _options.is_int(v)
+                else f"pairs[{k}]: part index {v!r} is not an int",
+                argument=f"pairs[{k}]",
+                allowed=allowed,
+            )
+        out.append(int(v))
+    return out[0], out[1]
 
 
 def no_fit_polygons(
@@ -236,18 +290,22 @@ def no_fit_polygons(
     >>> nfps[(1, 90, 0, 0)].area == nfps[(0, 0, 1, 90)].area
     True
     """
-    parts = list(parts)
+    parts = _parts(parts)
     n = len(parts)
     rot = _rotations_per_part(rotations, n)
+    _options.threads(threads)
+    _options.progress(progress)
     if pairs is None:
         pairs = [(i, j) for i in range(n) for j in range(n)]
+    else:
+        pairs = _options.sequence(pairs, "pairs", "an iterable of (i, j) part-index pairs")
     keys = []
-    for pr in pairs:
-        i, j = (int(v) for v in pr)
-        for v in (i, j):
-            if not 0 <= v < n:
-                raise ValueError(f"pairs: part index {v} out of range for {n} parts")
+    missing = {i for i, p in enumerate(parts) if p is None}
+    for k, pr in enumerate(pairs):
+        i, j = _pair_index(pr, k, n)
         keys.extend((i, ri, j, rj) for ri in rot[i] for rj in rot[j])
+    # None stays None: every NFP of a missing part
+    todo = [key for key in keys if key[0] not in missing and key[2] not in missing]
 
     # canonical jobs: (i, rotation of A, j, rotation of B's reflection) -> requests
     oriented: dict[tuple, Any] = {}
@@ -263,7 +321,7 @@ def no_fit_polygons(
     job_list: list[tuple] = []
     plan = []  # (key, job index, quarter turns to apply)
     qt = {a: _quarter_turns(a) for r in rot for a in r}
-    for key in keys:
+    for key in todo:
         i, ri, j, rj = key
         qi, qj = qt[ri], qt[rj]
         if qi is not None and qj is not None:
@@ -290,6 +348,8 @@ def no_fit_polygons(
 
     As = [a for a, _ in job_list]
     Bs = [b for _, b in job_list]
+    if not job_list:
+        return dict.fromkeys(keys)
     try:
         res = minkowski_sum_general_many(As, Bs, progress=progress, threads=threads)
     except GeometryError as exc:
@@ -309,7 +369,29 @@ def no_fit_polygons(
         g = _rotate_geoms(res[idx[sel]], t)
         for s, gg in zip(sel, g, strict=True):
             out[plan[s][0]] = gg
-    return {key: out[key] for key in keys}
+    return {key: out.get(key) for key in keys}
+
+
+def _parts(parts: Any) -> list:
+    """The parts as a list (a GeoSeries, an object array, any sequence), each checked:
+    None stays None (its NFPs are None), an empty part is an EmptyGeometryError and
+    anything that is not a polygon a specific GeometryError, naming ``parts[i]``."""
+    if hasattr(parts, "geometry") and hasattr(parts, "values"):  # GeoSeries / GeoDataFrame
+        parts = parts.geometry.values
+    out = _options.sequence(parts, "parts", "a sequence of polygons")
+    out = [None if p is None else p for p in out]
+    for i, p in enumerate(out):
+        if p is None:
+            continue
+        name = f"parts[{i}]"
+        if type(p).__module__.startswith("shapely"):
+            if p.is_empty:
+                raise EmptyGeometryError(f"{name}: empty {p.geom_type}", argument=name)
+            if p.geom_type not in ("Polygon", "MultiPolygon", "LinearRing"):
+                raise ShapeError(f"{name}: a {p.geom_type} is not a polygon", argument=name)
+            continue
+        as_array(p, name)  # raises the specific error for a bad ring (not kept: exactness)
+    return out
 
 
 def _rename(exc: GeometryError, As: list, Bs: list, oriented: dict) -> GeometryError:
@@ -580,18 +662,23 @@ def read_esicup(path: Any) -> dict[str, Any]:
     ----------
     path : str or path-like
         A JSON file with ``name``, ``strip`` (``height``, ``length``) and ``pieces``
-        (each with ``id``, ``quantity``, ``rotations``, ``outer`` and ``holes``).
+        (each with ``id``, ``quantity``, ``rotations``, ``outer`` and ``holes``), or a
+        GeoJSON FeatureCollection of Polygon features (one piece each; ``id``,
+        ``quantity`` and ``rotations`` from its properties; ``name`` and ``strip`` may
+        be members of the collection).
 
     Returns
     -------
     dict
         ``name``, ``ids``, ``parts`` (shapely Polygons, holes kept, coordinates as given),
-        ``rotations`` (one tuple per part), ``quantities`` and ``strip``.
+        ``rotations`` (one tuple per part), ``quantities``, ``strip`` and ``properties``
+        (each piece's feature properties, or None).
 
     Raises
     ------
     InputFormatError
-        The file is not such an instance (names the field).
+        The file is not such an instance (names the field: a piece, its rotations or
+        quantity, the strip; JSON nested too deeply, a number beyond float64).
 
     Examples
     --------
@@ -607,31 +694,65 @@ def read_esicup(path: Any) -> dict[str, Any]:
     """
     import shapely
 
+    from ._foreign import foreign_errors
+
     name = str(path)
     try:
-        with open(path, encoding="utf-8") as f:
-            d = json.load(f)
-    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        with open(path, "rb") as f:
+            raw = f.read()
+    except OSError as exc:
         raise InputFormatError(
-            f"{name}: not a JSON instance ({exc})", argument=name, hint="see docs/nesting.md"
-        ) from exc
+            f"{name}: cannot read ({exc.strerror or exc})", argument=name
+        ) from None
+    try:
+        with foreign_errors(name, "reading the instance"):
+            d = json.loads(raw.decode("utf-8-sig"))
+    except InputFormatError as exc:
+        raise exc.renamed(hint="see docs/nesting.md") from None
+    if isinstance(d, Mapping) and d.get("type") == "FeatureCollection":
+        d = _instance_from_features(d, name)
     if not isinstance(d, Mapping) or not isinstance(d.get("pieces"), list):
         raise InputFormatError(
             f"{name}: no 'pieces' list", argument=name, hint="an ESICUP instance in JSON"
         )
-    parts, rots, qty, ids = [], [], [], []
+    strip = d.get("strip", {})
+    if strip is None:
+        strip = {}
+    if not isinstance(strip, Mapping) or not all(
+        strip.get(k) is None or _is_number(strip.get(k)) for k in ("height", "length")
+    ):
+        raise InputFormatError(
+            f"{name}: 'strip' must be an object with numbers height and length (or null), "
+            f"got {str(strip)[:60]}",
+            argument=name,
+            hint='e.g. "strip": {"height": 40, "length": null}',
+        )
+    parts, rots, qty, ids, props = [], [], [], [], []
     for k, p in enumerate(d["pieces"]):
+        where = f"{name}: pieces[{k}]"
         try:
-            outer = np.asarray(p["outer"], dtype=np.float64)
-            holes = [np.asarray(h, dtype=np.float64) for h in p.get("holes", [])]
-            parts.append(shapely.Polygon(outer, holes))
-            rots.append(tuple(p.get("rotations", [0])))
-            qty.append(int(p.get("quantity", 1)))
+            if not isinstance(p, Mapping):
+                raise TypeError(f"a piece is an object, not {type(p).__name__}")
+            with foreign_errors(where, "reading the piece"):
+                outer = _coords(p["outer"])
+                holes = [_coords(h) for h in p.get("holes", None) or []]
+                parts.append(shapely.Polygon(outer, holes))
+            rot = p.get("rotations", [0])
+            if not isinstance(rot, list) or not rot or not all(_is_number(r) for r in rot):
+                raise TypeError(f"'rotations' must be a non-empty list of numbers, got {rot!r}")
+            rots.append(tuple(rot))
+            q = p.get("quantity", 1)
+            if not isinstance(q, int) or isinstance(q, bool) or q < 0:
+                raise TypeError(f"'quantity' must be a whole number, got {q!r}")
+            qty.append(q)
             ids.append(str(p.get("id", k)))
+            props.append(p.get("properties") if isinstance(p.get("properties"), Mapping) else None)
         except (KeyError, TypeError, ValueError, shapely.errors.ShapelyError) as exc:
+            if isinstance(exc, GeometryError):
+                raise exc.renamed(where) if exc.argument != where else exc from None
             raise InputFormatError(
-                f"{name}: pieces[{k}] is malformed ({type(exc).__name__}: {exc})",
-                argument=name,
+                f"{where} is malformed ({type(exc).__name__}: {exc})",
+                argument=where,
                 vertex=None,
                 hint="each piece needs an 'outer' list of [x, y] and a 'rotations' list",
             ) from exc
@@ -641,8 +762,67 @@ def read_esicup(path: Any) -> dict[str, Any]:
         "parts": parts,
         "rotations": rots,
         "quantities": qty,
-        "strip": d.get("strip", {}),
+        "strip": dict(strip),
+        "properties": props,
     }
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def _coords(v: Any) -> np.ndarray:
+    """An (n, 2) float64 array of JSON [x, y] pairs: numbers only, finite (an int beyond
+    the float range is an OverflowError, translated by the caller)."""
+    if not isinstance(v, list) or not all(
+        isinstance(p, list) and len(p) == 2 and all(_is_number(c) for c in p) for p in v
+    ):
+        raise TypeError("coordinates must be a list of [x, y] number pairs")
+    out = np.array([[float(x), float(y)] for x, y in v], dtype=np.float64).reshape(-1, 2)
+    if not np.isfinite(out).all():
+        raise ValueError("a coordinate does not fit in float64")
+    return out
+
+
+def _instance_from_features(fc: Mapping, name: str) -> dict:
+    """An instance from a GeoJSON FeatureCollection: one piece per Polygon feature, whose
+    properties may give ``id``, ``quantity`` and ``rotations`` (kept whole, as the
+    piece's ``properties``); ``name`` and ``strip`` may be members of the collection."""
+    feats = fc.get("features")
+    if not isinstance(feats, list):
+        raise InputFormatError(f"{name}: FeatureCollection 'features' is not a list", argument=name)
+    pieces = []
+    for k, f in enumerate(feats):
+        where = f"{name}: features[{k}]"
+        if not isinstance(f, Mapping) or not isinstance(f.get("geometry"), Mapping):
+            raise InputFormatError(
+                f"{where}: not a GeoJSON Feature with a geometry", argument=where
+            )
+        g = f["geometry"]
+        if g.get("type") != "Polygon" or not isinstance(g.get("coordinates"), list):
+            raise InputFormatError(
+                f"{where}: a piece must be a Polygon, got {str(g.get('type'))[:30]}",
+                argument=where,
+            )
+        rings = g["coordinates"]
+        if not rings or not all(isinstance(r, list) and r for r in rings):
+            raise InputFormatError(f"{where}: a Polygon without rings", argument=where)
+        props = f.get("properties") if isinstance(f.get("properties"), Mapping) else {}
+        pieces.append(
+            {
+                "id": props.get("id", f.get("id", k)),
+                "quantity": props.get("quantity", 1),
+                "rotations": props.get("rotations", [0]),
+                "outer": rings[0][:-1] if rings[0][0] == rings[0][-1] else rings[0],
+                "holes": [r[:-1] if r[0] == r[-1] else r for r in rings[1:]],
+                "properties": dict(props),
+            }
+        )
+    return {"name": fc.get("name", name), "strip": fc.get("strip", {}), "pieces": pieces}
+
+
+#: :func:`pair_blocks` lists at most this many pairs (each a Python tuple in memory).
+MAX_PAIRS = 1 << 32
 
 
 def pair_blocks(n: int, size: int) -> list[list[tuple[int, int]]]:
@@ -657,8 +837,14 @@ def pair_blocks(n: int, size: int) -> list[list[tuple[int, int]]]:
     >>> mk.pair_blocks(3, 4)
     [[(0, 0), (0, 1), (1, 0)], [(0, 2), (2, 0), (1, 1)], [(1, 2), (2, 1), (2, 2)]]
     """
-    if size < 2:
-        raise ValueError(f"size must be at least 2, got {size}")
+    n = _options.integer(n, "n", 0)
+    size = _options.integer(size, "size", 2)
+    if n * n > MAX_PAIRS:
+        raise ResourceLimitError(
+            f"n: {n} parts make {n * n} pairs, more than {MAX_PAIRS}",
+            argument="n",
+            hint="split the parts into groups first",
+        )
     blocks: list[list[tuple[int, int]]] = [[]]
     for i in range(n):
         for j in range(i, n):

@@ -65,11 +65,12 @@ from typing import Any
 
 import numpy as np
 
+from . import _options
 from ._coerce import as_array
 from ._geos import area_parts, checked_polygonal
 from .errors import (
     GeometryError,
-    NonFiniteError,
+    OverflowGeometryError,
     ShapeError,
 )
 from .predicates import orient_array
@@ -80,6 +81,11 @@ __all__ = ["offset", "offset_arcs", "OffsetArcs", "ROUNDING_MARGIN", "APPROX", "
 #: by which the pieces are pushed away from the true boundary, so that float64 rounding
 #: of the union's vertices (a few units in the last place) cannot cross it.
 ROUNDING_MARGIN = 2.0**-42
+
+#: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
+#: (raised to the least tolerance float64 can guarantee at the input's magnitude, see
+#: :data:`ROUNDING_MARGIN`, when that is larger).
+DEFAULT_TOLERANCE = 1e-3
 
 #: The tolerance actually used is at most this fraction of the radius (a coarser one is
 #: met by a finer approximation).
@@ -120,18 +126,7 @@ def _is_many(x: Any) -> bool:
 
 
 def _finite_float(v: Any, name: str) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, Fraction, np.integer, np.floating)):
-        raise GeometryError(
-            f"{name}: expected a real number, got {type(v).__name__}",
-            argument=name,
-            hint=f"give {name} as an int, float or Fraction",
-        )
-    f = float(v)
-    if not math.isfinite(f):
-        raise NonFiniteError(
-            f"{name}: must be finite, got {v!r}", argument=name, hint=f"give a finite {name}"
-        )
-    return f
+    return _options.real(v, name)
 
 
 def _check_shapely(geom: Any, name: str) -> Any:
@@ -184,9 +179,12 @@ def _read(obj: Any, name: str) -> tuple[list[np.ndarray], Any]:
             return _geom_rings(geom), geom
     data, _kind = as_array(obj, name)
     if isinstance(data, list):  # Fractions or huge ints: rounded to float64 once
-        data = np.array([(float(Fraction(x)), float(Fraction(y))) for x, y in data])
-        if not np.isfinite(data).all():
-            raise NonFiniteError(
+        try:
+            data = np.array([(float(Fraction(x)), float(Fraction(y))) for x, y in data])
+        except OverflowError:
+            data = None
+        if data is None or not np.isfinite(data).all():
+            raise OverflowGeometryError(
                 f"{name}: a coordinate does not fit in float64",
                 argument=name,
                 hint="scale the input down",
@@ -584,7 +582,8 @@ def _scale_exponent(rings: list[np.ndarray], r: float) -> int:
     big = max([float(np.abs(x).max()) for x in rings] + [r])
     if _COMFORT_LO <= big <= _COMFORT_HI:
         return 0
-    return -math.frexp(big)[1]
+    # at most 2**1000 either way, so that the factor itself is a finite float
+    return max(-1000, min(1000, -math.frexp(big)[1]))
 
 
 def _offset_one(
@@ -616,7 +615,18 @@ def _offset_one(
     grow = distance > 0
     if join == "round":
         # a tolerance beyond half the radius is met by a finer approximation
-        eps = min(tolerance * s, r * _MAX_REL_TOLERANCE)
+        if tolerance is None:  # the default: relative to r, at least what float64 can meet
+            eps = min(max(DEFAULT_TOLERANCE * r, 4 * m * (1 + 2.0**-20)), r * _MAX_REL_TOLERANCE)
+        else:
+            eps = min(tolerance * s, r * _MAX_REL_TOLERANCE)
+        if eps < 4 * m and tolerance is None:
+            raise GeometryError(
+                f"distance: {distance!r} is too small for float64 at these magnitudes (the "
+                f"least tolerance it can guarantee, about {math.ldexp(4 * m, -e):.3g}, is "
+                "more than half of it)",
+                argument="distance",
+                hint="move the polygon nearer to the origin, or offset by more",
+            )
         if eps < 4 * m:
             raise GeometryError(
                 f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
@@ -714,10 +724,8 @@ def _map(fn: Any, polygon: Any) -> Any:
 
 def _check_options(distance, tolerance, approx, join, miter_limit):
     d = _finite_float(distance, "distance")
-    if approx not in APPROX:
-        raise ValueError(f"approx must be one of {APPROX}, got {approx!r}")
-    if join not in JOINS:
-        raise ValueError(f"join must be one of {JOINS}, got {join!r}")
+    _options.choice(approx, "approx", APPROX)
+    _options.choice(join, "join", JOINS)
     lim = _finite_float(miter_limit, "miter_limit")
     if lim < 1.0:
         raise GeometryError(
@@ -734,12 +742,6 @@ def _check_options(distance, tolerance, approx, join, miter_limit):
                 argument="tolerance",
                 hint="e.g. 1e-3 times the distance",
             )
-    elif join == "round":
-        raise GeometryError(
-            "tolerance: a round join needs a tolerance",
-            argument="tolerance",
-            hint="e.g. tolerance=1e-3 * abs(distance)",
-        )
     return d, tol, lim
 
 
@@ -747,7 +749,7 @@ def offset(
     polygon: Any,
     distance: float,
     *,
-    tolerance: float | None,
+    tolerance: float | None = None,
     approx: str = "outer",
     join: str = "round",
     miter_limit: float = 2.0,
@@ -766,9 +768,13 @@ def offset(
     distance : float
         The tool radius ``r = |distance|``: positive grows, negative shrinks (a shrink
         may erase parts or split a polygon into several), zero returns the polygon.
-    tolerance : float
-        The largest error ``ε > 0`` (in the input's units) of a round join. Required for
-        ``join="round"``; unused by miter and square joins (pass None).
+    tolerance : float, optional
+        The largest error ``ε > 0`` (in the input's units) of a round join; unused by
+        miter and square joins. Default (None): :data:`DEFAULT_TOLERANCE` ``· |r|`` =
+        ``1e-3 · |r|``, or the least tolerance float64 can guarantee at the input's
+        magnitude when that is larger (about ``2**-40 · (max |x| + r)``, see
+        :data:`ROUNDING_MARGIN`). The one-sided guarantee below holds for the tolerance
+        used, given or default.
     approx : {"outer", "inner"}
         Which side of the true set the result lies on (see Returns).
     join : {"round", "miter", "square"}
@@ -828,7 +834,43 @@ def offset(
     'POLYGON ((-1 -1, 3 -1, 3 3, -1 3, -1 -1))'
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
-    return _map(lambda p: _offset_one(p, d, tol, approx, join, lim), polygon)
+    return _map(lambda p: _finite_result(_offset_one, p, d, tol, approx, join, lim), polygon)
+
+
+def _finite_result(fn: Any, *args: Any) -> Any:
+    """``fn(*args)``, a shapely result, refused when a coordinate overflowed float64
+    (an OverflowGeometryError, never inf)."""
+    import shapely
+
+    with np.errstate(over="ignore", invalid="ignore"):
+        out = fn(*args)
+    if not out.is_empty:
+        big = float(np.abs(shapely.get_coordinates(out)).max())
+        if not math.isfinite(big):
+            raise OverflowGeometryError(
+                "result: the offset does not fit in float64 (a coordinate is infinite)",
+                argument="result",
+                hint="scale the input down (or offset by a smaller distance)",
+            )
+        _check_underflow(big)
+    return out
+
+
+def _check_underflow(big: float) -> None:
+    """Refuse results whose magnitude ``big`` is so small that rounding them to float64
+    (to multiples of 2**-1074) may exceed the rounding margin, which keeps the error on
+    its side: an OverflowGeometryError (an underflow), never a result off its side."""
+    if 0.0 < big < _UNDERFLOW:
+        raise OverflowGeometryError(
+            f"result: the offset underflows float64 (magnitude {big!r}: rounding to float64 "
+            "may exceed the guaranteed tolerance)",
+            argument="result",
+            hint="scale the input up by a power of two, and the result down",
+        )
+
+
+#: Results of a smaller magnitude cannot keep the one-sided guarantee in float64.
+_UNDERFLOW = 2.0**-1020
 
 
 # --------------------------------------------------------------------------------------
@@ -910,18 +952,32 @@ class OffsetArcs:
 
     @property
     def area(self) -> float:
-        """The exact area (shoelace over the chords plus each arc's circular segment)."""
+        """The exact area (shoelace over the chords plus each arc's circular segment),
+        computed at a power-of-two scale (exact) so that no product overflows; an area
+        beyond float64 raises :class:`~minkowski2d.errors.OverflowGeometryError`."""
+        rings = self.rings
+        big = max([float(np.abs(r[:, :2]).max()) for r in rings if len(r)] + [self.radius])
+        k = -math.frexp(big)[1] if big > 0 else 0
+        rad = math.ldexp(self.radius, k)
         total = 0.0
-        for ring in self.rings:
-            x, y, b = ring[:, 0], ring[:, 1], ring[:, 2]
+        for ring in rings:
+            x, y = np.ldexp(ring[:, 0], k), np.ldexp(ring[:, 1], k)
+            b = ring[:, 2]
             x1, y1 = np.roll(x, -1), np.roll(y, -1)
             total += 0.5 * float((x * y1 - x1 * y).sum())
             arc = b != 0
             if arc.any():
                 sweep = 4.0 * np.arctan(b[arc])
-                seg = 0.5 * self.radius**2 * (sweep - np.sin(sweep))
+                seg = 0.5 * rad**2 * (sweep - np.sin(sweep))
                 total += float(seg.sum())
-        return total
+        try:
+            return math.ldexp(total, -2 * k)
+        except OverflowError:
+            raise OverflowGeometryError(
+                f"area: {total!r} * 2**{-2 * k} does not fit in float64",
+                argument="area",
+                hint="scale the polygon down",
+            ) from None
 
     def _plot_(self, ax: Any, **kwargs: Any) -> Any:
         """Draw for :func:`minkowski2d.plot`: the straight pieces and the arcs in two
@@ -952,7 +1008,7 @@ class OffsetArcs:
         ax.set_aspect("equal", adjustable="datalim")
         return ax
 
-    def to_polygon(self, tolerance: float, approx: str = "outer") -> Any:
+    def to_polygon(self, tolerance: float | None = None, approx: str = "outer") -> Any:
         """A polygon within ``tolerance`` of this boundary, on the side ``approx`` says:
         the same as :func:`offset` with these arguments (and its guarantee).
 
@@ -1339,6 +1395,7 @@ def _trace(
     return polys, verified[0]
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is reported, not warned about
 def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
     """The exact boundary of a polygon grown (or shrunk) by a disk: segments and arcs.
 
@@ -1390,6 +1447,7 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
             hint="give a positive (grow) or negative (shrink) distance",
         )
     rings, geom = _read(polygon, "polygon")
+    _check_underflow(max([float(np.abs(x).max()) for x in rings] + [abs(d)]))
     if len(rings) == 1 and len(rings[0]) == 1:
         if d < 0:
             return OffsetArcs([], d, polygon)
@@ -1446,4 +1504,11 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
         for p in polys:
             for ring in p:
                 ring[:, [0, 1, 3, 4]] /= s
-    return OffsetArcs(polys, d, polygon, verified)
+    out = OffsetArcs(polys, d, polygon, verified)
+    if not all(np.isfinite(ring[:, :3]).all() for ring in out.rings):
+        raise OverflowGeometryError(
+            "result: the offset does not fit in float64 (a coordinate is infinite)",
+            argument="result",
+            hint="scale the input down (or offset by a smaller distance)",
+        )
+    return out

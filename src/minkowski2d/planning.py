@@ -38,8 +38,18 @@ from typing import Any
 import numpy as np
 
 from . import _dispatch as D
+from . import _options
 from ._core import _ext
-from .errors import GeometryError, NoPathError, SelfIntersectionError, ShapeError
+from ._foreign import foreign_errors
+from .errors import (
+    EmptyGeometryError,
+    GeometryError,
+    NonFiniteError,
+    NoPathError,
+    OverflowGeometryError,
+    SelfIntersectionError,
+    ShapeError,
+)
 
 __all__ = ["MotionPlanner", "Path"]
 
@@ -62,7 +72,10 @@ class Path:
         the scene and the query are integers (bend points exact), else float64. ``k`` is 1
         when start and goal coincide.
     length : float
-        Euclidean length (each segment's length correctly rounded, summed with fsum).
+        Euclidean length: each segment's exact length correctly rounded to float64,
+        summed with fsum. A length beyond float64 raises
+        :class:`~minkowski2d.errors.OverflowGeometryError` (never ``inf``); the points
+        are valid all the same.
 
     Examples
     --------
@@ -72,14 +85,25 @@ class Path:
     (5.0, 2)
     """
 
-    __slots__ = ("points", "length")
+    __slots__ = ("points", "_length")
 
     def __init__(self, points: np.ndarray) -> None:
         self.points = points
-        self.length = math.fsum(
-            math.hypot(float(b[0]) - float(a[0]), float(b[1]) - float(a[1]))
-            for a, b in zip(points.tolist(), points.tolist()[1:])
-        )
+        self._length: float | None = None
+
+    @property
+    def length(self) -> float:
+        if self._length is None:
+            pts = self.points.tolist()
+            try:
+                self._length = math.fsum(_segment_length(a, b) for a, b in zip(pts, pts[1:]))
+            except OverflowError:
+                raise OverflowGeometryError(
+                    "length: the path is longer than float64 can hold (1.8e308)",
+                    argument="length",
+                    hint="the path itself is valid; scale the scene down to measure it",
+                ) from None
+        return self._length
 
     def __len__(self) -> int:
         return len(self.points)
@@ -108,6 +132,28 @@ class Path:
         pts = self.points.astype(np.float64)
         ax.plot(pts[:, 0], pts[:, 1], **kw)
         return ax
+
+
+def _segment_length(a: Any, b: Any) -> float:
+    """|b - a| correctly rounded to float64 (exact arithmetic on the ints or floats);
+    OverflowError beyond float64."""
+    dx = Fraction(b[0]) - Fraction(a[0])
+    dy = Fraction(b[1]) - Fraction(a[1])
+    if dx.denominator == 1 and dy.denominator == 1 and abs(dx) < _F26 and abs(dy) < _F26:
+        return math.sqrt(int(dx) ** 2 + int(dy) ** 2)  # exact square: one rounding
+    q = dx * dx + dy * dy  # the exact square of the length
+    num, den = q.numerator, q.denominator
+    # r = floor(sqrt(q) * 2**k) with at least 55 bits; sqrt(q) in [r, r + 1) / 2**k: a
+    # value strictly inside rounds like sqrt(q) (no float64 rounding boundary is there)
+    k = max(0, (110 - (num.bit_length() - den.bit_length())) // 2 + 1)
+    m = (num << (2 * k)) // den
+    r = math.isqrt(m)
+    if r * r == m and (num << (2 * k)) % den == 0:
+        return float(Fraction(r, 1 << k))
+    return float(Fraction(2 * r + 1, 1 << (k + 1)))
+
+
+_F26 = 1 << 26
 
 
 # --------------------------------------------------------------------------------------
@@ -154,6 +200,8 @@ def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
     if _is_shapely(obj):
         gt = obj.geom_type
         if gt == "MultiPolygon" or gt == "GeometryCollection":
+            if obj.is_empty:
+                raise EmptyGeometryError(f"{name}: an empty {gt}", argument=name)
             out: list[np.ndarray] = []
             for k, part in enumerate(obj.geoms):
                 out += _pieces(part, f"{name}.geoms[{k}]")[0]
@@ -226,7 +274,11 @@ def _scalar(v: Any, name: str) -> int | float:
     if isinstance(v, (float, np.floating)):
         f = float(v)
         if not math.isfinite(f):
-            raise GeometryError(f"{name}: a coordinate is not finite", argument=name)
+            raise NonFiniteError(
+                f"{name}: a coordinate is not finite ({f!r})",
+                argument=name,
+                hint="remove NaN and infinite values",
+            )
         return f
     if isinstance(v, Fraction):
         f = float(v)
@@ -242,7 +294,9 @@ def _point(p: Any, name: str) -> tuple[Any, Any]:
     if _is_shapely(p):
         if p.geom_type != "Point":
             raise ShapeError(f"{name}: expected a point, got a {p.geom_type}", argument=name)
-        return (float(p.x), float(p.y))
+        if p.is_empty:
+            raise EmptyGeometryError(f"{name}: an empty Point", argument=name)
+        return (_scalar(p.x, name), _scalar(p.y, name))
     try:
         seq = list(p)
     except TypeError:
@@ -302,18 +356,20 @@ class MotionPlanner:
     def __init__(
         self, obstacles: Any, robot: Any = None, *, workspace: Any = None, threads: int = 1
     ) -> None:
-        self.threads = max(1, int(threads))
+        self.threads = _options.threads(threads)
         obs = self._read_obstacles(obstacles)
         kinds = set()
         opieces: list[list[np.ndarray]] = []
         for k, o in enumerate(obs):
-            pcs, kind = _pieces(o, f"obstacles[{k}]")
+            with foreign_errors(f"obstacles[{k}]", "triangulating the polygon", magnitude=True):
+                pcs, kind = _pieces(o, f"obstacles[{k}]")
             opieces.append(pcs)
             kinds.add(kind)
         if robot is None:
             rpieces, rkind = [np.zeros((1, 2), np.int64)], "int"
         else:
-            rpieces, rkind = _pieces(robot, "robot")
+            with foreign_errors("robot", "triangulating the polygon", magnitude=True):
+                rpieces, rkind = _pieces(robot, "robot")
             kinds.add(rkind)
         self._ws_kind = None
         wpieces: list[np.ndarray] = []
@@ -330,14 +386,24 @@ class MotionPlanner:
                     )
                 box = vals
             else:
-                wp, wkind = _pieces(workspace, "workspace")
+                with foreign_errors("workspace", "triangulating the polygon", magnitude=True):
+                    wp, wkind = _pieces(workspace, "workspace")
                 kinds.add(wkind)
                 allw = np.concatenate(wp)
+                if len(wp) == 1 and len(wp[0]) < 3:
+                    raise ShapeError(
+                        f"workspace: a polygon workspace needs an area, got {len(wp[0])} "
+                        "distinct point(s)",
+                        argument="workspace",
+                        hint="give (xmin, ymin, xmax, ymax) or a polygon with three or more "
+                        "vertices",
+                    )
                 rect = self._rectangle(workspace, allw, len(wp))
                 if rect is not None:
                     box = rect
                 else:
-                    wpieces = self._ring(workspace, allw, wkind)
+                    with foreign_errors("workspace", "triangulating the polygon", magnitude=True):
+                        wpieces = self._ring(workspace, allw, wkind)
         kind = "float" if "float" in kinds else "int"
         self.kind = kind
         opieces = [_as_kind(p, kind, f"obstacles[{k}]") for k, p in enumerate(opieces)]
@@ -348,13 +414,17 @@ class MotionPlanner:
         self._obstacle_pieces = opieces
         self.n_obstacles = len(obs)
         neg = [np.ascontiguousarray(-r) for r in rpieces]
+        wgroup = _workspace_groups(wpieces, rpieces)
         As, Bs, groups = [], [], []
         for g, pcs in enumerate([*opieces, wpieces]):
+            ws = g == len(opieces)
+            k = 0
             for a in pcs:
                 for b in neg:
                     As.append(a)
                     Bs.append(b)
-                    groups.append(g)
+                    groups.append(g + wgroup[k] if ws else g)
+                    k += 1
         from .batch import Ragged, minkowski_sum_many
 
         if As:
@@ -435,7 +505,20 @@ class MotionPlanner:
             raise ShapeError(f"{name}: a scene must be a JSON object", argument=name)
         if scene.get("type") == "FeatureCollection":
             obstacles, robot, workspace = [], None, None
-            for k, feat in enumerate(scene.get("features", [])):
+            feats = scene.get("features", [])
+            if not isinstance(feats, list):
+                raise ShapeError(
+                    f"{name}: 'features' must be a list, got {type(feats).__name__}",
+                    argument=name,
+                )
+            for k, feat in enumerate(feats):
+                if not isinstance(feat, dict) or not isinstance(feat.get("properties") or {}, dict):
+                    raise ShapeError(
+                        f"{name}: features[{k}] is not a GeoJSON Feature object",
+                        argument=name,
+                        hint='a feature is {"type": "Feature", "geometry": ..., "properties": '
+                        '{"role": ...}}',
+                    )
                 role = (feat.get("properties") or {}).get("role", "obstacle")
                 g = geom(feat.get("geometry"), f"features[{k}]")
                 if role == "robot":
@@ -486,7 +569,13 @@ class MotionPlanner:
                 argument="obstacles",
                 hint="wrap a single polygon in a list: [polygon]",
             )
-        obs = list(obstacles)
+        try:
+            obs = list(obstacles)
+        except TypeError:
+            raise ShapeError(
+                f"obstacles: expected a sequence of polygons, got {type(obstacles).__name__}",
+                argument="obstacles",
+            ) from None
         if obs and isinstance(obs[0], (tuple, list)) and len(obs[0]) == 2:
             first = obs[0]
             if all(isinstance(v, (int, float, np.number, Fraction)) for v in first):
@@ -514,15 +603,21 @@ class MotionPlanner:
         obstacle group, inside a frame box strictly around it."""
         import shapely
 
-        x0, y0 = allw[:, 0].min(), allw[:, 1].min()
-        x1, y1 = allw[:, 0].max(), allw[:, 1].max()
-        m = max(x1 - x0, y1 - y0, 1)
+        x0, y0 = allw[:, 0].min().item(), allw[:, 1].min().item()
+        x1, y1 = allw[:, 0].max().item(), allw[:, 1].max().item()
+        m = max(x1 - x0, y1 - y0, 1)  # Python numbers: an overflow is inf, checked below
         if wkind == "int":
             m = int(m)
             f = [int(x0) - m, int(y0) - m, int(x1) + m, int(y1) + m]
         else:
             m = float(m)
             f = [float(x0) - m, float(y0) - m, float(x1) + m, float(y1) + m]
+            if not all(math.isfinite(v) for v in f):
+                raise OverflowGeometryError(
+                    "workspace: the frame around the workspace polygon overflows float64",
+                    argument="workspace",
+                    hint="scale the scene down (or use a box workspace)",
+                )
         self._frame = f
         if _is_shapely(workspace):
             inner = workspace
@@ -559,7 +654,9 @@ class MotionPlanner:
         dt = np.int64 if kind == "int" else np.float64
         box = np.asarray(self.box if self.box is not None else [], dtype=dt)
         core = (_ext.PlannerI if kind == "int" else _ext.PlannerF)()
-        core.build(c, o, g, np.ascontiguousarray(box), self.threads)
+        # a polygon workspace's frame lies strictly outside workspace ⊖ robot: the box of
+        # the reference point is then open (no point on the frame is valid)
+        core.build(c, o, g, np.ascontiguousarray(box), self.threads, self._frame is not None)
         return core
 
     def _float_twin(self) -> Any:
@@ -590,7 +687,7 @@ class MotionPlanner:
 
     def _point_error(self, which: str, p: tuple, grp: int) -> GeometryError:
         where = f"({_fmt(p[0])}, {_fmt(p[1])})"
-        if grp == -2 or grp == self.n_obstacles:
+        if grp == -2 or grp >= self.n_obstacles:
             e = GeometryError(
                 f"{which}: {where} is outside the workspace (the robot does not fit there)",
                 argument=which,
@@ -724,7 +821,14 @@ class MotionPlanner:
             if arr.ndim == 1:
                 return [_point(arr.tolist(), name)]
             return [_point(r, f"{name}[{i}]") for i, r in enumerate(arr.tolist())]
-        seq = list(arr)
+        try:
+            seq = list(arr)
+        except TypeError:
+            raise ShapeError(
+                f"{name}: expected a point (x, y) or a sequence of points, got "
+                f"{type(arr).__name__}",
+                argument=name,
+            ) from None
         if len(seq) == 2 and not hasattr(seq[0], "__len__") and not _is_shapely(seq[0]):
             return [_point(seq, name)]
         return [_point(r, f"{name}[{i}]") for i, r in enumerate(seq)]
@@ -762,7 +866,8 @@ class MotionPlanner:
         pl, out = self._route(pts)
         dt = np.int64 if out == "int" else np.float64
         loc = pl._core.locate(np.ascontiguousarray(np.array(pts, dtype=dt).reshape(-1, 2)))
-        return np.asarray(loc, dtype=np.int64)
+        loc = np.asarray(loc, dtype=np.int64)
+        return np.minimum(loc, self.n_obstacles)  # every workspace group is the workspace
 
     # ------------------------------------------------------------------ geometry
     @property
@@ -870,6 +975,47 @@ class MotionPlanner:
             f"MotionPlanner({self.n_obstacles} obstacles, {len(self.pieces)} C-pieces, "
             f"{len(self._core.candidates())} bend candidates, kind={self.kind!r})"
         )
+
+
+def _workspace_groups(wpieces: list, rpieces: list) -> list[int]:
+    """The group (counted from the workspace's first, ``n_obstacles``) of each pair
+    (outside piece, robot piece), in the order the pairs are built.
+
+    A robot with area meets the outside of the workspace exactly when its reference
+    point is in the open interior of one pair's sum: every pair is its own group, so
+    that a corridor of the workspace exactly as wide as the robot stays open (the union
+    of one group's pieces would close it). A point or a segment robot could also slip
+    along a seam between two outside triangles (a point along any seam, a segment along
+    one parallel to it): triangles sharing such an edge form one group, whose union it
+    must avoid (seams blocking)."""
+    nr = len(rpieces)
+    if any(len(r) >= 3 for r in rpieces):
+        return list(range(len(wpieces) * nr))
+    F = Fraction
+    d = None  # the segment robot's direction (exact); None for a point robot
+    if len(rpieces[0]) == 2:
+        (x0, y0), (x1, y1) = rpieces[0].tolist()
+        d = (F(x1) - F(x0), F(y1) - F(y0))
+    parent = list(range(len(wpieces)))
+
+    def find(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    edges: dict = {}
+    for i, t in enumerate(wpieces):
+        pts = [tuple(v) for v in t.tolist()]
+        for a, b in zip(pts, pts[1:] + pts[:1]):
+            j = edges.pop((b, a), None)  # the same edge the other way round: shared
+            if j is None:
+                edges[(a, b)] = i
+                continue
+            e = (F(b[0]) - F(a[0]), F(b[1]) - F(a[1]))
+            if d is None or e[0] * d[1] == e[1] * d[0]:
+                parent[find(i)] = find(j)
+    return [find(i) for i in range(len(wpieces)) for _ in range(nr)]
 
 
 def _ring_coords(workspace: Any) -> np.ndarray:

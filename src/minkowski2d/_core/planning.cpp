@@ -28,8 +28,10 @@ void bind_planner(nb::module_& m, const char* name) {
       // coords (V, 2) of the solid pieces, offsets (P + 1,), groups (P,), box (4,) or empty
       .def(
           "build",
-          [](PL& self, In2<T> coords, In1<i64> off, In1<i64> grp, In1<T> box, int threads) {
+          [](PL& self, In2<T> coords, In1<i64> off, In1<i64> grp, In1<T> box, int threads,
+             bool open_box) {
             self.threads = threads;
+            self.open_box = open_box;
             const T* c = coords.data();
             self.pc.assign(c, c + 2 * coords.shape(0));
             self.poff.assign(off.data(), off.data() + off.shape(0));
@@ -46,7 +48,7 @@ void bind_planner(nb::module_& m, const char* name) {
             self.build();
           },
           "coords"_a.noconvert(), "offsets"_a.noconvert(), "groups"_a.noconvert(),
-          "box"_a.noconvert(), "threads"_a = 1)
+          "box"_a.noconvert(), "threads"_a = 1, "open_box"_a = false)
       // (status, group, path (k, 2)); status 0 ok, 1 start bad, 2 goal bad, 3 no path
       .def("query",
            [](const PL& self, T sx, T sy, T gx, T gy) {

@@ -68,9 +68,16 @@ struct Planner {
   // ---- seams: (cx, cy, dx, dy) and group
   std::vector<T> sm;
   std::vector<int> sgrp;
-  // ---- closed box for the reference point
+  // ---- box for the reference point: closed, or open (a polygon workspace's frame, which
+  // lies strictly outside workspace (-) robot: no point of its boundary is valid)
   bool has_box = false;
+  bool open_box = false;
   T bx0{}, by0{}, bx1{}, by1{};
+  // ---- lengths: every distance is computed in units of 1 / lscale (a power of two, so
+  // scaling is exact), chosen so that no coordinate difference, edge length or path sum
+  // overflows (1 unless a coordinate reaches 2^990)
+  double lscale = 1.0;
+  double magnitude_cache = 0.0;
   // ---- grid over items (pieces 0..P-1, seams P..P+S-1)
   double gx0 = 0, gy0 = 0, cs = 1, slack = 0;
   i64 nx = 1, ny = 1;
@@ -106,7 +113,9 @@ struct Planner {
   }
 
   bool in_box(T x, T y) const {
-    return !has_box || (bx0 <= x && x <= bx1 && by0 <= y && y <= by1);
+    if (!has_box) return true;
+    if (open_box) return bx0 < x && x < bx1 && by0 < y && y < by1;
+    return bx0 <= x && x <= bx1 && by0 <= y && y <= by1;
   }
 
   // segment [p, q] (p != q) meets the open interior of piece k
@@ -358,8 +367,29 @@ struct Planner {
     return false;
   }
 
-  static double dist(T ax, T ay, T bx, T by) {
-    return std::hypot((double)ax - (double)bx, (double)ay - (double)by);
+  // |a - b| * s; s is a power of two <= 1 chosen by scale_for (see lscale)
+  static double dist(T ax, T ay, T bx, T by, double s) {
+    double dx = (double)ax - (double)bx, dy = (double)ay - (double)by;
+    if (s != 1.0) {
+      dx = std::isfinite(dx) ? dx * s : (double)ax * s - (double)bx * s;
+      dy = std::isfinite(dy) ? dy * s : (double)ay * s - (double)by * s;
+    }
+    return std::hypot(dx, dy);
+  }
+
+  // the scale for coordinates of magnitude at most m: scaled coordinates stay below
+  // 2^991, so differences, edge lengths and sums of up to 2^30 edges stay finite
+  static double scale_for(double m) {
+    if (!(m >= 0x1p990)) return 1.0;
+    return std::ldexp(1.0, 990 - std::ilogb(m));
+  }
+
+  double magnitude() const {
+    double m = 0.0;
+    for (const T& v : pc) m = std::max(m, std::fabs((double)v));
+    if (has_box)
+      for (T v : {bx0, by0, bx1, by1}) m = std::max(m, std::fabs((double)v));
+    return m;
   }
 
   // ------------------------------------------------------------------ build
@@ -646,7 +676,8 @@ struct Planner {
     aw.assign(aoff[N], 0.0);
     std::vector<i64> fill(aoff.begin(), aoff.end() - 1);
     for (auto& e : edges) {
-      double d = dist(cv[2 * e.first], cv[2 * e.first + 1], cv[2 * e.second], cv[2 * e.second + 1]);
+      double d = dist(cv[2 * e.first], cv[2 * e.first + 1], cv[2 * e.second],
+                      cv[2 * e.second + 1], lscale);
       adj[fill[e.first]] = e.second;
       aw[fill[e.first]++] = d;
       adj[fill[e.second]] = e.first;
@@ -720,6 +751,8 @@ struct Planner {
   void build() {
     convexify();
     P = (i64)pgrp.size();
+    magnitude_cache = magnitude();
+    lscale = scale_for(magnitude_cache);
     build_seams();
     build_grid();
     PlanScratch S;
@@ -755,11 +788,17 @@ struct Planner {
       return 0;
     }
     const i64 N = ncand();
+    // query points may be larger than the scene: the query's own scale, and the factor
+    // (a power of two) that brings the graph's edge lengths to it
+    double qm = std::max({std::fabs((double)sx), std::fabs((double)sy), std::fabs((double)gx),
+                          std::fabs((double)gy)});
+    const double qs = std::min(lscale, scale_for(std::max(qm, magnitude_cache)));
+    const double wf = qs / lscale;
     std::vector<std::pair<int, double>> se, ge;
     for (i64 v = 0; v < N; ++v) {
       const T vx = cv[2 * v], vy = cv[2 * v + 1];
       if (tangent(sx, sy, v) && !blocked(sx, sy, vx, vy, S))
-        se.emplace_back((int)v, dist(sx, sy, vx, vy));
+        se.emplace_back((int)v, dist(sx, sy, vx, vy, qs));
     }
     if (se.empty()) return 3;
     std::vector<char> sc;
@@ -773,7 +812,7 @@ struct Planner {
       if (comp[v] >= (int)sc.size() || !sc[comp[v]]) continue;
       const T vx = cv[2 * v], vy = cv[2 * v + 1];
       if (tangent(gx, gy, v) && !blocked(gx, gy, vx, vy, S))
-        ge.emplace_back((int)v, dist(gx, gy, vx, vy));
+        ge.emplace_back((int)v, dist(gx, gy, vx, vy, qs));
     }
     if (ge.empty()) return 3;
     // A*: nodes 0..N-1, N start, N + 1 goal
@@ -783,8 +822,8 @@ struct Planner {
     std::vector<char> done(N + 2, 0);
     for (auto& e : ge) togoal[e.first] = e.second;
     auto h = [&](i64 v) {
-      if (v >= N) return v == N + 1 ? 0.0 : dist(sx, sy, gx, gy);
-      return dist(cv[2 * v], cv[2 * v + 1], gx, gy);
+      if (v >= N) return v == N + 1 ? 0.0 : dist(sx, sy, gx, gy, qs);
+      return dist(cv[2 * v], cv[2 * v + 1], gx, gy, qs);
     };
     using QE = std::pair<double, int>;
     std::priority_queue<QE, std::vector<QE>, std::greater<QE>> pq;
@@ -808,7 +847,7 @@ struct Planner {
         for (auto& e : se) relax(e.first, e.second);
         continue;
       }
-      for (i64 e = aoff[a]; e < aoff[a + 1]; ++e) relax(adj[e], aw[e]);
+      for (i64 e = aoff[a]; e < aoff[a + 1]; ++e) relax(adj[e], aw[e] * wf);
       if (togoal[a] < INF) relax((int)N + 1, togoal[a]);
     }
     if (!done[N + 1]) return 3;

@@ -106,13 +106,13 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         raise CLIError(
             f"cannot listen on 127.0.0.1:{args.port} ({exc.strerror}); try --port 0"
         ) from None
-    print(f"Serving the editable animation at {srv.url}  (Ctrl-C to stop)", flush=True)
     try:
+        print(f"Serving the editable animation at {srv.url}  (Ctrl-C to stop)", flush=True)
         srv.serve_forever()
     except KeyboardInterrupt:
         print("\nstopped", file=sys.stderr, flush=True)
     finally:
-        srv.server_close()
+        srv.stop()  # at once: open connections are ended, workers are not waited for
     return 0
 
 

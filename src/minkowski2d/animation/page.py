@@ -542,12 +542,17 @@ def animate(
     Returns
     -------
     Path
-        The file written.
+        The file written. As the command line does, the page goes to a new, uniquely
+        named temporary file beside ``path`` (``O_EXCL``), renamed into place once
+        complete: an existing file is replaced whole or not at all, and a symlink
+        planted at a temporary name is never followed.
 
     Raises
     ------
     GeometryError
         Bad or non-convex input, as :func:`minkowski2d.minkowski_sum`.
+    OSError
+        ``path`` is a directory or cannot be written (nothing is left behind).
 
     Examples
     --------
@@ -558,10 +563,13 @@ def animate(
     >>> p.name, p.stat().st_size > 10000
     ('animation.html', True)
     """
+    from .._cli_common import CLIError, write_output
+
     page = render(a, b, obstacle=obstacle, robot=robot, hull=hull, title=title)
-    out = Path(path)
-    out.write_text(page, encoding="utf-8")
-    return out
+    try:
+        return write_output(page, path)  # the command line's safe writer
+    except CLIError as exc:
+        raise OSError(f"{exc} ({exc.hint})" if exc.hint else str(exc)) from None
 
 
 def write_demo_page(path: str | Path = "animation.html") -> Path:

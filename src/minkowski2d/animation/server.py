@@ -22,6 +22,7 @@ neither a burst of requests nor stalled uploads can exhaust the process.
 from __future__ import annotations
 
 import json
+import socket
 import sys
 import threading
 from http import HTTPStatus
@@ -38,7 +39,8 @@ MAX_BODY = 1 << 20  # bytes
 WORKERS = 8  # requests handled at once
 BACKLOG = 128  # connections the kernel queues while every worker is busy
 TIMEOUT = 10.0  # seconds a connection may stay silent (headers, body, keep-alive)
-_DRAIN_LIMIT = 16 * MAX_BODY  # an oversized body up to this is read (and dropped) for the 413
+LINGER = 2.0  # seconds an oversized upload may keep sending after its 413 (then closed)
+_DRAIN_LIMIT = 16 * MAX_BODY  # at most this much of an oversized body is read and dropped
 
 
 class RequestError(Exception):
@@ -195,6 +197,8 @@ class _Handler(BaseHTTPRequestHandler):
             if exc.status >= 408:
                 self.close_connection = True  # the body may be unread
             self._error(exc.status, exc)
+            if exc.status == HTTPStatus.REQUEST_ENTITY_TOO_LARGE:
+                self._linger()
             return
         # Input the geometry rejects is an answer, not a protocol failure: status 200 with
         # {"error": ...}, which the page shows (a 4xx would also log a console error).
@@ -220,18 +224,28 @@ class _Handler(BaseHTTPRequestHandler):
             return
         self._send(HTTPStatus.OK, text.encode(), "application/json")
 
-    def _drain(self, n: int) -> None:
-        """Read and drop a body somewhat over the cap, so that the client, still sending,
-        can read the 413 (a larger one is not read: the connection is closed)."""
-        if n > _DRAIN_LIMIT:
+    def _linger(self) -> None:
+        """After a 413 sent from the Content-Length alone: end our side of the connection
+        (the client sees the whole answer), then read and drop what the client is still
+        sending, at most :data:`_DRAIN_LIMIT` bytes or :data:`LINGER` idle seconds, so
+        that closing does not reset the connection under the answer."""
+        try:
+            self.wfile.flush()
+            self.connection.shutdown(socket.SHUT_WR)
+            self.connection.settimeout(min(LINGER, self.server.timeout_s))
+        except OSError:
             return
+        self._drain(_DRAIN_LIMIT)
+
+    def _drain(self, n: int) -> None:
+        """Read and drop up to ``n`` bytes of an unwanted body."""
         try:
             while n > 0:
                 chunk = self.rfile.read(min(n, 1 << 16))
                 if not chunk:
                     return
                 n -= len(chunk)
-        except OSError:
+        except (OSError, ValueError):
             return
 
     def _read_request(self) -> Any:
@@ -255,8 +269,7 @@ class _Handler(BaseHTTPRequestHandler):
         if not (raw_len.isascii() and raw_len.isdigit()) or len(raw_len) > 12:
             raise RequestError(HTTPStatus.LENGTH_REQUIRED, "Content-Length required")
         n = int(raw_len)
-        if n > MAX_BODY:
-            self._drain(n)
+        if n > MAX_BODY:  # answered at once; the body is drained after the answer
             raise RequestError(
                 HTTPStatus.REQUEST_ENTITY_TOO_LARGE,
                 f"request too large ({n} bytes; at most {MAX_BODY})",
@@ -318,29 +331,55 @@ class AnimationServer(ThreadingHTTPServer):
         self.verbose = verbose
         self.timeout_s = float(timeout)
         self._slots = threading.BoundedSemaphore(max(1, int(workers)))
+        self._active: set = set()  # the connections being served
+        self._lock = threading.Lock()
         super().__init__((HOST, port), _Handler)
 
     def process_request(self, request: Any, client_address: Any) -> None:
         # a bounded pool: wait (accepting nothing more) until one of the workers is free
         self._slots.acquire()
+        with self._lock:
+            self._active.add(request)
+        t = threading.Thread(target=self._work, args=(request, client_address), daemon=True)
         try:
-            t = threading.Thread(target=self._work, args=(request, client_address), daemon=True)
             t.start()
-        except BaseException:
+        except RuntimeError:  # no thread could be started: this request is dropped
+            with self._lock:
+                self._active.discard(request)
             self._slots.release()
             self.shutdown_request(request)
             raise
+        # (an interrupt inside start() leaves the request to the thread, which runs, and
+        # to stop(), which ends its connection)
 
     def _work(self, request: Any, client_address: Any) -> None:
         try:
             self.process_request_thread(request, client_address)
         finally:
+            with self._lock:
+                self._active.discard(request)
             self._slots.release()
 
+    def stop(self) -> None:
+        """Stop at once, whatever the workers are doing: close the listening socket and
+        end every open connection (a worker waiting on its client sees the end of the
+        stream; one computing finishes into a closed socket). Workers are daemon threads,
+        so the process can exit without waiting for them."""
+        self.server_close()
+        with self._lock:
+            active = list(self._active)
+        for request in active:
+            try:
+                request.shutdown(socket.SHUT_RDWR)
+            except OSError:
+                pass
+
     def handle_error(self, request: Any, client_address: Any) -> None:
-        # a browser closing a kept-alive connection, or a silent client timing out, is not
-        # an error worth a traceback
+        # a browser closing a kept-alive connection, a silent client timing out, or a
+        # connection ended by stop(), is not an error worth a traceback
         if isinstance(sys.exc_info()[1], (ConnectionError, TimeoutError)):
+            return
+        if self.socket.fileno() == -1:  # stopped: the connection was ended under it
             return
         super().handle_error(request, client_address)
 
