@@ -140,8 +140,10 @@ inline Box operand_box(const std::vector<Polygon>& P) {
 // Is direction d (d0 -> d1) in the range a ring turns through at its vertex j (from the
 // incoming edge u to the outgoing v)? `start_open`: the range excludes its start
 // direction and includes its end (edges of the other ring at this ring's vertices use
-// the opposite convention, so that parallel edges pair exactly once). Returns +1 for a
-// left turn (the segment forwards), -1 for a right turn (backwards), 0 not in range.
+// the opposite convention, so that parallel edges pair exactly once; the ends are fixed
+// in angle, not in the order of traversal, so the count of a direction over a ring is
+// its net number of turns through it, 1). Returns +1 for a left turn (the segment
+// forwards), -1 for a right turn (backwards), 0 not in range.
 struct Dir {
   double x0, y0, x1, y1;
 };
@@ -157,9 +159,11 @@ inline int in_range(const Dir& u, const Dir& v, const Dir& d, bool start_open) {
     return in ? 1 : 0;
   }
   if (t < 0) {
-    // clockwise from u to v: the counter-clockwise range from v to u, ends swapped
+    // clockwise from u to v: the directions from v to u counter-clockwise. The open end
+    // is the same end *in angle* as for a left turn (the low end for `start_open`), so
+    // that a direction is counted once per net turn through it: here that is v.
     int a = cr(v, d), b = cr(d, u);
-    bool in = start_open ? (a >= 0 && b > 0) : (a > 0 && b >= 0);
+    bool in = start_open ? (a > 0 && b >= 0) : (a >= 0 && b > 0);
     return in ? -1 : 0;
   }
   return 0;  // straight on (collinear vertex): no turn
