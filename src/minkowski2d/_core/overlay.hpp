@@ -354,9 +354,13 @@ inline bool rule_inside(int rule, int w0, int w1) {
 }
 
 // An input edge: along `line` from vertex v0 to vertex v1 (global vertex ids).
+// `group`: edges of one group >= 0 meet only at common end vertices (the edges of one
+// convex ring, or the boundary of one earlier result), so their pairs are not tested;
+// -1 (the default): no such promise.
 struct EdgeIn {
   i64 line, v0, v1;
   int w, layer;
+  int group = -1;
 };
 // A boundary edge of a result: inside on the left.
 struct BEdge {
@@ -383,6 +387,11 @@ class Overlay {
 
   // counters (for tests and limits)
   i64 n_pairs = 0, n_crossings = 0, n_vertices = 0, n_edges = 0;
+  // Work limit: at most pair_budget candidate pairs (box-overlapping edge pairs, each
+  // classified) per run, -1 for none. Beyond it the run stops: `limited` is set, the
+  // boundary is empty and the rings have status LIMIT.
+  i64 pair_budget = -1;
+  bool limited = false;
 
   // The boundary of the selected region as exact edges (global vertex ids).
   void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out) {
@@ -393,6 +402,11 @@ class Overlay {
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
     arrange(in, rule);
+    if (limited) {
+      out.clear();
+      out.status = LIMIT;
+      return;
+    }
     trace(out);
   }
 
@@ -440,8 +454,14 @@ class Overlay {
   void arrange(const std::vector<EdgeIn>& in, int rule) {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
+    limited = false;
     local_vertices(in);
     intersect();
+    if (limited) {
+      bnd_.clear();
+      vg_.clear();
+      return;
+    }
     split();
     order();
     pieces();
@@ -451,55 +471,116 @@ class Overlay {
 
   // step 1: input vertices sorted and merged; edges in local ids
   std::vector<i64> tmp_;
+  // sort keys: the vertex's approximation (exact for a plain point: e == 0)
+  struct VKey {
+    double x, ex, y, ey;
+    i64 g;
+  };
+  std::vector<VKey> vk_;
+  VKey vkey(i64 g) const {
+    const Vert& V = g_.verts[g];
+    return VKey{V.x.v, V.x.e, V.y.v, V.y.e, g};
+  }
+  // the sweep order (x, then y) of two vertices: by the approximations when they are
+  // exact or certain, else exactly
+  int vkcmp(const VKey& a, const VKey& b) const {
+    if (a.g == b.g) return 0;
+    if (a.ex == 0 && b.ex == 0 && a.ey == 0 && b.ey == 0) {
+      if (a.x != b.x) return a.x < b.x ? -1 : 1;
+      if (a.y != b.y) return a.y < b.y ? -1 : 1;
+      return 0;
+    }
+    int s = fe_sign(FE{a.x, a.ex} - FE{b.x, b.ex});
+    if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 0);
+    if (s != 0) return s;
+    s = fe_sign(FE{a.y, a.ey} - FE{b.y, b.ey});
+    if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 1);
+    return s;
+  }
+  // global id -> local id of this run (valid when its stamp is the run's)
+  struct G2L {
+    std::uint32_t stamp;
+    i64 local;
+  };
+  std::vector<G2L> g2l_;
+  std::uint32_t run_stamp_ = 0;
+
   void local_vertices(const std::vector<EdgeIn>& in) {
-    tmp_.clear();
-    for (const EdgeIn& e : in) {
-      tmp_.push_back(e.v0);
-      tmp_.push_back(e.v1);
+    if (g2l_.size() < g_.verts.size()) g2l_.resize(g_.verts.size() + g_.verts.size() / 2, G2L{0, 0});
+    if (++run_stamp_ == 0) {
+      for (G2L& q : g2l_) q.stamp = 0;
+      run_stamp_ = 1;
     }
-    std::sort(tmp_.begin(), tmp_.end());
-    tmp_.erase(std::unique(tmp_.begin(), tmp_.end()), tmp_.end());
-    std::sort(tmp_.begin(), tmp_.end(), [&](i64 a, i64 b) { return g_.vcmp(a, b) < 0; });
+    vk_.clear();
+    for (const EdgeIn& e : in)
+      for (i64 v : {e.v0, e.v1})
+        if (g2l_[v].stamp != run_stamp_) {
+          g2l_[v].stamp = run_stamp_;
+          vk_.push_back(vkey(v));
+        }
+    std::sort(vk_.begin(), vk_.end(),
+              [&](const VKey& a, const VKey& b) { return vkcmp(a, b) < 0; });
     vg_.clear();
-    // global id -> local id: by binary search over a sorted copy
-    std::vector<std::pair<i64, i64>> map;
-    map.reserve(tmp_.size());
-    for (std::size_t t = 0; t < tmp_.size(); ++t) {
-      if (t == 0 || g_.vcmp(tmp_[t - 1], tmp_[t]) != 0) vg_.push_back(tmp_[t]);
-      map.emplace_back(tmp_[t], (i64)vg_.size() - 1);
+    for (std::size_t t = 0; t < vk_.size(); ++t) {
+      if (t == 0 || vkcmp(vk_[t - 1], vk_[t]) != 0) vg_.push_back(vk_[t].g);
+      g2l_[vk_[t].g].local = (i64)vg_.size() - 1;
     }
-    std::sort(map.begin(), map.end());
-    auto local = [&](i64 v) {
-      return std::lower_bound(map.begin(), map.end(), std::make_pair(v, (i64)-1))->second;
-    };
     ed_.clear();
+    ngroups_ = 0;
     for (const EdgeIn& e : in) {
-      i64 a = local(e.v0), b = local(e.v1);
-      if (a != b && e.w != 0) ed_.push_back(EdgeIn{e.line, a, b, e.w, e.layer});
+      i64 a = g2l_[e.v0].local, b = g2l_[e.v1].local;
+      if (a != b && e.w != 0) {
+        ed_.push_back(EdgeIn{e.line, a, b, e.w, e.layer, e.group});
+        if (e.group >= ngroups_) ngroups_ = e.group + 1;
+      }
     }
   }
+  int ngroups_ = 0;
 
   // step 2
+  std::vector<double> bx0_, bx1_, by0_, by1_;
+  std::vector<int> grp_;
+  BoxScratch boxes_;
   void intersect() {
     const i64 n = (i64)ed_.size();
     splits_.clear();
     newv_.clear();
-    std::vector<double> x0(n), x1(n), y0(n), y1(n);
+    bx0_.resize(n);
+    bx1_.resize(n);
+    by0_.resize(n);
+    by1_.resize(n);
+    grp_.resize(n);
     const double up = 1 + 0x1p-50;
     for (i64 i = 0; i < n; ++i) {
       const Vert &a = g_.verts[vg_[ed_[i].v0]], &b = g_.verts[vg_[ed_[i].v1]];
+      grp_[i] = ed_[i].group;
+      if (a.x.e == 0 && a.y.e == 0 && b.x.e == 0 && b.y.e == 0) {
+        // exact coordinates: the box itself
+        bx0_[i] = std::min(a.x.v, b.x.v);
+        bx1_[i] = std::max(a.x.v, b.x.v);
+        by0_[i] = std::min(a.y.v, b.y.v);
+        by1_[i] = std::max(a.y.v, b.y.v);
+        continue;
+      }
       // boxes hold the exact vertices: widen by the bounds (rounded outwards)
       double ax0 = a.x.v - a.x.e * up, ax1 = a.x.v + a.x.e * up;
       double bx0 = b.x.v - b.x.e * up, bx1 = b.x.v + b.x.e * up;
       double ay0 = a.y.v - a.y.e * up, ay1 = a.y.v + a.y.e * up;
       double by0 = b.y.v - b.y.e * up, by1 = b.y.v + b.y.e * up;
-      x0[i] = std::nextafter(std::min(ax0, bx0), -INFINITY);
-      x1[i] = std::nextafter(std::max(ax1, bx1), INFINITY);
-      y0[i] = std::nextafter(std::min(ay0, by0), -INFINITY);
-      y1[i] = std::nextafter(std::max(ay1, by1), INFINITY);
+      bx0_[i] = std::nextafter(std::min(ax0, bx0), -INFINITY);
+      bx1_[i] = std::nextafter(std::max(ax1, bx1), INFINITY);
+      by0_[i] = std::nextafter(std::min(ay0, by0), -INFINITY);
+      by1_[i] = std::nextafter(std::max(ay1, by1), INFINITY);
     }
-    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(),
-              [&](i64 i, i64 j) { classify(i, j); });
+    box_pairs_grouped(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
+                      ngroups_, boxes_, [&](i64 i, i64 j) {
+                        if (pair_budget >= 0 && n_pairs >= pair_budget) {
+                          limited = true;
+                          return false;
+                        }
+                        classify(i, j);
+                        return true;
+                      });
   }
 
   // vertex p strictly between the ends of edge i (p on its line)
@@ -577,7 +658,7 @@ class Overlay {
   std::vector<i64> lid_;  // node -> arrangement vertex (local), after union
   std::vector<i64> av_;   // arrangement vertex -> global vertex id
   void order() {
-    const i64 nn = (i64)uf_.size();
+    const i64 nn = (i64)uf_.size(), nv0 = (i64)vg_.size();
     lid_.assign(nn, -1);
     av_.clear();
     for (i64 node = 0; node < nn; ++node) {
@@ -590,18 +671,40 @@ class Overlay {
     }
     const i64 m = (i64)av_.size();
     n_vertices = m;
-    tmp_.resize(m);
-    std::iota(tmp_.begin(), tmp_.end(), 0);
-    std::sort(tmp_.begin(), tmp_.end(),
-              [&](i64 a, i64 b) { return g_.vcmp(av_[a], av_[b]) < 0; });
+    // the input vertices are roots, in sweep order (local_vertices); sort the new ones
+    // and merge
+    vk_.clear();
+    for (i64 t = nv0; t < m; ++t) vk_.push_back(vkey(av_[t]));
+    std::vector<i64>& tail = tmp_;
+    tail.resize(m - nv0);
+    std::iota(tail.begin(), tail.end(), nv0);
+    std::sort(tail.begin(), tail.end(),
+              [&](i64 a, i64 b) { return vkcmp(vk_[a - nv0], vk_[b - nv0]) < 0; });
     rank_.resize(m);
-    for (i64 t = 0; t < m; ++t) rank_[tmp_[t]] = t;
+    i64 i = 0, j = 0, t = 0;
+    VKey hk{};
+    bool have = false;
+    while (i < nv0 || j < m - nv0) {
+      if (i < nv0 && !have) {
+        hk = vkey(av_[i]);
+        have = true;
+      }
+      bool take_head =
+          j >= m - nv0 || (i < nv0 && vkcmp(hk, vk_[tail[j] - nv0]) < 0);
+      if (take_head) {
+        rank_[i++] = t++;
+        have = false;
+      } else {
+        rank_[tail[j++]] = t++;
+      }
+    }
   }
 
   // step 4: pieces
+  std::vector<Piece> raw_;
   void pieces() {
-    std::vector<Piece> raw;
-    raw.reserve(ed_.size() + splits_.size());
+    std::vector<Piece>& raw = raw_;
+    raw.clear();
     std::size_t k = 0;
     for (i64 i = 0; i < (i64)ed_.size(); ++i) {
       const EdgeIn& e = ed_[i];
@@ -656,32 +759,23 @@ class Overlay {
     return g_.turn(e1.line, e1.s, e2.line, e2.s) > 0;
   }
 
-  struct StatusLess {
-    const Overlay* o;
-    const std::vector<Piece>* ps;
-    bool operator()(i64 i, i64 j) const {
-      if (i == j) return false;
-      const Piece &e1 = (*ps)[i], &e2 = (*ps)[j];
-      if (e1.l == e2.l) return o->slope_below(e1, e2);
-      if (o->rank_[e1.l] > o->rank_[e2.l]) {
-        int s = o->side(e2, e1.l);
-        if (s == 0) return o->slope_below(e1, e2);
-        return s < 0;
-      }
-      int s = o->side(e1, e2.l);
-      if (s == 0) return o->slope_below(e1, e2);
-      return s > 0;
-    }
-  };
-
   // Sweeps the pieces ps (which do not cross); after inserting the pieces that start at
   // a vertex calls at_vertex(new pieces bottom to top, predecessor of the lowest or -1).
+  // The status is a vector sorted bottom to top: at vertex v the pieces below v are a
+  // prefix (v is strictly left of each, looking along it), then come the pieces that end
+  // at v (no piece passes through a vertex: the pieces are noded); those are replaced
+  // by the pieces that start at v, in slope order.
+  std::vector<i64> sw_by_rank_, sw_lo_l_, sw_lo_r_, sw_at_l_, sw_at_r_, sw_fill_, sw_status_,
+      sw_fresh_;
   template <class F>
   void sweep(const std::vector<Piece>& ps, F&& at_vertex) {
     const i64 nv = (i64)av_.size(), np = (i64)ps.size();
-    std::vector<i64> by_rank(nv);
+    std::vector<i64>&by_rank = sw_by_rank_, &lo_l = sw_lo_l_, &lo_r = sw_lo_r_,
+    &at_l = sw_at_l_, &at_r = sw_at_r_, &status = sw_status_, &fresh = sw_fresh_;
+    by_rank.resize(nv);
     for (i64 v = 0; v < nv; ++v) by_rank[rank_[v]] = v;
-    std::vector<i64> lo_l(nv + 1, 0), lo_r(nv + 1, 0);
+    lo_l.assign(nv + 1, 0);
+    lo_r.assign(nv + 1, 0);
     for (const Piece& e : ps) {
       ++lo_l[e.l + 1];
       ++lo_r[e.r + 1];
@@ -690,29 +784,46 @@ class Overlay {
       lo_l[v + 1] += lo_l[v];
       lo_r[v + 1] += lo_r[v];
     }
-    std::vector<i64> at_l(np), at_r(np);
-    {
-      std::vector<i64> fl(lo_l.begin(), lo_l.end() - 1), fr(lo_r.begin(), lo_r.end() - 1);
-      for (i64 e = 0; e < np; ++e) {
-        at_l[fl[ps[e].l]++] = e;
-        at_r[fr[ps[e].r]++] = e;
-      }
-    }
-    using Status = std::set<i64, StatusLess>;
-    Status status(StatusLess{this, &ps});
-    std::vector<typename Status::iterator> where(np);
-    std::vector<i64> fresh;
+    at_l.resize(np);
+    at_r.resize(np);
+    sw_fill_.assign(lo_l.begin(), lo_l.end() - 1);
+    for (i64 e = 0; e < np; ++e) at_l[sw_fill_[ps[e].l]++] = e;
+    sw_fill_.assign(lo_r.begin(), lo_r.end() - 1);
+    for (i64 e = 0; e < np; ++e) at_r[sw_fill_[ps[e].r]++] = e;
+    status.clear();
     for (i64 t = 0; t < nv; ++t) {
       i64 v = by_rank[t];
-      for (i64 k = lo_r[v]; k < lo_r[v + 1]; ++k) status.erase(where[at_r[k]]);
-      if (lo_l[v] == lo_l[v + 1]) continue;
+      const i64 nend = lo_r[v + 1] - lo_r[v], nstart = lo_l[v + 1] - lo_l[v];
+      if (nend == 0 && nstart == 0) continue;
+      // the first piece not below v
+      std::size_t lo = 0, hi = status.size();
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        if (side(ps[status[mid]], v) > 0)
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      const std::size_t pos = lo;
+#ifdef MK_OVERLAY_CHECK
+      for (i64 k = 0; k < nend; ++k)
+        if (pos + k >= status.size() || ps[status[pos + k]].r != v) std::abort();
+#endif
       fresh.assign(at_l.begin() + lo_l[v], at_l.begin() + lo_l[v + 1]);
-      std::sort(fresh.begin(), fresh.end(),
-                [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
-      for (i64 e : fresh) where[e] = status.insert(e).first;
-      auto it = where[fresh[0]];
-      i64 pred = it == status.begin() ? -1 : *std::prev(it);
-      at_vertex(fresh, pred);
+      if (fresh.size() > 1)
+        std::sort(fresh.begin(), fresh.end(),
+                  [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
+      // replace the nend pieces at pos (they end at v) by the fresh ones
+      const i64 diff = nstart - nend;
+      if (diff > 0) {
+        status.insert(status.begin() + pos, (std::size_t)diff, -1);
+      } else if (diff < 0) {
+        status.erase(status.begin() + pos, status.begin() + pos + (std::size_t)(-diff));
+      }
+      for (i64 k = 0; k < nstart; ++k) status[pos + k] = fresh[k];
+
+      if (nstart == 0) continue;
+      at_vertex(fresh, pos == 0 ? (i64)-1 : status[pos - 1]);
     }
   }
 

@@ -1,0 +1,122 @@
+// union.cpp -- bindings of the exact union of convex polygons (union.hpp) into
+// minkowski2d._core._ext.
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/tuple.h>
+
+#include <cstdint>
+
+#include "bind.hpp"
+#include "exact.hpp"
+#include "union.hpp"
+
+namespace nb = nanobind;
+using namespace nb::literals;
+using mk::i64;
+
+namespace mk_bind {
+namespace {
+
+nb::tuple stats_tuple(const mk::un::UnionStats& s) {
+  return nb::make_tuple(s.pieces, s.culled, s.kept, s.rounds, s.runs, s.pairs, s.crossings);
+}
+
+nb::tuple result(const mk::ov::Rings& r, const mk::un::UnionStats& s, i64 bad_poly,
+                 i64 bad_vertex) {
+  return nb::make_tuple(to_numpy(r.xy, r.xy.size() / 2, 2),
+                        to_numpy(r.ring_off, r.ring_off.size(), 0),
+                        to_numpy(r.poly_off, r.poly_off.size(), 0), r.status, stats_tuple(s),
+                        nb::make_tuple(bad_poly, bad_vertex));
+}
+
+// union_convex(xy (N, 2) float64, offsets (P + 1,), budget=-1, cull=True) -> (xy,
+// ring_off, poly_off, status, (pieces, culled, kept, rounds, runs, pairs, crossings),
+// (polygon, vertex)): the exact union of convex polygons (each in any orientation,
+// repeated and collinear vertices allowed; points and segments add nothing). A polygon
+// that is not convex gives its normalize status and (polygon, vertex); a work budget
+// (candidate pairs of the overlays, -1: none) exceeded gives LIMIT.
+nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 budget, bool cull) {
+  const i64 n = (i64)XY.shape(0), np = (i64)OFF.shape(0) - 1;
+  if (XY.shape(1) != 2) throw nb::value_error("union_convex: coordinates must have shape (n, 2)");
+  const i64* off = OFF.data();
+  if (np < 0 || off[0] != 0 || off[np] != n) throw nb::value_error("union_convex: bad offsets");
+  for (i64 k = 0; k < np; ++k)
+    if (off[k + 1] < off[k]) throw nb::value_error("union_convex: bad offsets");
+  const double* xy = XY.data();
+  mk::ov::Geo g;
+  mk::ov::Rings out;
+  mk::un::UnionStats st;
+  i64 bad_poly = -1, bad_vertex = -1;
+  {
+    nb::gil_scoped_release nogil;
+    // each polygon normalized exactly: counter-clockwise, strictly convex
+    i64 big = 1;
+    for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
+    std::vector<i64> keep(big), idx(big);
+    std::vector<std::int8_t> turn(big);
+    std::vector<mk::ov::P> pts;
+    std::vector<i64> po{0};
+    pts.reserve(n);
+    for (i64 k = 0; k < np && out.status == mk::OK; ++k) {
+      mk::Norm N = mk::normalize(xy, off[k], off[k + 1], keep.data(), turn.data(), idx.data());
+      if (N.code) {
+        out.status = N.code;
+        bad_poly = k;
+        bad_vertex = N.vertex;
+        break;
+      }
+      if (N.k >= 3) {
+        for (i64 t = 0; t < N.k; ++t) {
+          i64 i = N.at(t);
+          pts.push_back(mk::ov::P{mk::ov::dd(xy[2 * i]), mk::ov::dd(xy[2 * i + 1])});
+        }
+        po.push_back((i64)pts.size());
+      }
+    }
+    if (out.status == mk::OK) {
+      mk::un::PointSource src{&pts, &po};
+      mk::un::ConvexUnion<mk::un::PointSource> u(g, budget);
+      u.cull = cull;
+      u.unite(src, out);
+      st = u.st;
+    }
+  }
+  return result(out, st, bad_poly, bad_vertex);
+}
+
+// sum_pieces_union(pieces of A (coords, offsets), pieces of B, budget=-1, cull=True) ->
+// (xy, ring_off, poly_off, status, stats, (piece, vertex)): the union of all piece sums
+// (the decomposition method), pieces that cannot change it dropped before noding; a
+// piece that is not convex gives its status and (piece, vertex), B's numbered after A's.
+nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64> OB, i64 budget,
+                           bool cull) {
+  for (auto [P, O] : {std::pair{&PA, &OA}, std::pair{&PB, &OB}}) {
+    const i64 n = (i64)P->shape(0), np = (i64)O->shape(0) - 1;
+    if (P->shape(1) != 2) throw nb::value_error("sum_pieces: coordinates must have shape (n, 2)");
+    const i64* o = O->data();
+    if (np < 0 || o[0] != 0 || o[np] != n) throw nb::value_error("sum_pieces: bad offsets");
+    for (i64 k = 0; k < np; ++k)
+      if (o[k + 1] < o[k]) throw nb::value_error("sum_pieces: bad offsets");
+  }
+  mk::ov::Geo g;
+  mk::ov::Rings out;
+  mk::un::UnionStats st;
+  i64 bad = -1;
+  {
+    nb::gil_scoped_release nogil;
+    mk::un::sum_pieces_union(g, PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(),
+                             OB.data(), (i64)OB.shape(0) - 1, out, st, budget, cull, &bad);
+  }
+  return result(out, st, bad, -1);
+}
+
+}  // namespace
+
+void bind_union(nb::module_& m) {
+  m.def("union_convex", &union_convex, "xy"_a.noconvert(), "offsets"_a.noconvert(),
+        "budget"_a = -1, "cull"_a = true);
+  m.def("sum_pieces_union", &sum_pieces_union, "pa"_a.noconvert(), "oa"_a.noconvert(),
+        "pb"_a.noconvert(), "ob"_a.noconvert(), "budget"_a = -1, "cull"_a = true);
+}
+
+}  // namespace mk_bind
