@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <numeric>
 #include <type_traits>
 #include <vector>
@@ -11,6 +13,19 @@
 #include "exact.hpp"
 
 namespace mk {
+
+// The neighbouring doubles (std::nextafter without the library call): +-inf and NaN
+// stay, the neighbours of zero are the smallest subnormals.
+inline double next_up(double x) {
+  if (!(x - x == 0)) return x;
+  if (x == 0) return 0x1p-1074;
+  u64 b;
+  std::memcpy(&b, &x, sizeof b);
+  b = x > 0 ? b + 1 : b - 1;
+  std::memcpy(&x, &b, sizeof b);
+  return x;
+}
+inline double next_down(double x) { return -next_up(-x); }
 
 // Calls on_pair(i, j), i < j, for every pair of closed boxes that overlap. An on_pair
 // that returns bool stops the sweep by returning false (box_pairs then returns false).
@@ -101,6 +116,131 @@ inline bool box_pairs_grouped(i64 n, const double* xmin, const double* xmax,
       act.resize(w);
     }
     s.active[own].push_back(i);
+  }
+  return true;
+}
+
+}  // namespace mk
+
+namespace mk {
+
+// Scratch of segment_pairs (reused: no allocation once grown).
+struct GridScratch {
+  std::vector<i64> reg_start, reg_cell, cell_start, cell_edge, stamp;
+};
+
+// Candidate pairs of segments by a uniform grid: segment i runs from (ax, ay) to (bx, by)
+// up to tol[i] in each coordinate (the exact segment lies in the approximate one widened
+// by a square of half-side tol[i]); it is registered in every cell its widened row spans
+// reach, and on_pair(j, i), j < i, is called once for each pair of different groups
+// (group -1: any) that share a cell and whose boxes (x0, x1, y0, y1) overlap. Every pair
+// of segments with a common point is among them. on_pair may return false to stop.
+// Long edges are cheap here (a box sweep keeps them active over their whole x-range).
+template <class F>
+inline bool segment_pairs(i64 n, const double* ax, const double* ay, const double* bx,
+                          const double* by, const double* tol, const double* x0,
+                          const double* x1, const double* y0, const double* y1,
+                          const int* group, GridScratch& s, F&& on_pair) {
+  if (n < 2) return true;
+  double X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
+  for (i64 i = 0; i < n; ++i) {
+    X0 = std::min(X0, x0[i]);
+    X1 = std::max(X1, x1[i]);
+    Y0 = std::min(Y0, y0[i]);
+    Y1 = std::max(Y1, y1[i]);
+  }
+  const double W = X1 - X0, H = Y1 - Y0;
+  if (!(W < INFINITY && H < INFINITY)) return false;  // the caller falls back
+  const double target = (double)n;
+  double cs = std::sqrt(W * H / target);
+  if (!(cs > 0)) cs = std::max(W, H) / target;
+  const i64 nx = cs > 0 ? (i64)std::min(4096.0, std::max(1.0, std::ceil(W / cs))) : 1;
+  const i64 ny = cs > 0 ? (i64)std::min(4096.0, std::max(1.0, std::ceil(H / cs))) : 1;
+  const double ix = W > 0 ? (double)nx / W : 0.0, iy = H > 0 ? (double)ny / H : 0.0;
+  const double hy = H / (double)ny;
+  // cell indices by floor, widened by DELTA cells (far above their rounding errors)
+  constexpr double DELTA = 1e-6;
+  auto cx_lo = [&](double x) {
+    double t = std::floor((x - X0) * ix - DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)nx ? nx - 1 : (i64)t);
+  };
+  auto cx_hi = [&](double x) {
+    double t = std::floor((x - X0) * ix + DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)nx ? nx - 1 : (i64)t);
+  };
+  auto cy_lo = [&](double y) {
+    double t = std::floor((y - Y0) * iy - DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)ny ? ny - 1 : (i64)t);
+  };
+  auto cy_hi = [&](double y) {
+    double t = std::floor((y - Y0) * iy + DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)ny ? ny - 1 : (i64)t);
+  };
+  s.reg_start.assign(n + 1, 0);
+  s.reg_cell.clear();
+  for (i64 i = 0; i < n; ++i) {
+    double px = ax[i], py = ay[i], qx = bx[i], qy = by[i];
+    if (py > qy) {
+      std::swap(px, qx);
+      std::swap(py, qy);
+    }
+    const double M = std::max(std::max(std::fabs(px), std::fabs(qx)),
+                              std::max(std::fabs(py), std::fabs(qy)));
+    const double t = tol[i] + 1e-12 * M + 1e-300;
+    const i64 r0 = cy_lo(py - t), r1 = cy_hi(qy + t);
+    for (i64 r = r0; r <= r1; ++r) {
+      double xl, xh;
+      if (r0 == r1 || qy == py) {
+        xl = std::min(px, qx);
+        xh = std::max(px, qx);
+      } else {
+        // the part of the segment within the band (widened by t and a cell fraction)
+        const double b0 = Y0 + (double)r * hy - t - hy * DELTA,
+                     b1 = Y0 + (double)(r + 1) * hy + t + hy * DELTA;
+        const double dy = qy - py;
+        const double u0 = py < b0 ? (b0 - py) / dy : 0.0, u1 = qy > b1 ? (b1 - py) / dy : 1.0;
+        const double xa = px + (qx - px) * std::min(std::max(u0, 0.0), 1.0),
+                     xb = px + (qx - px) * std::min(std::max(u1, 0.0), 1.0);
+        xl = std::min(xa, xb);
+        xh = std::max(xa, xb);
+      }
+      const i64 c0 = cx_lo(xl - t), c1 = cx_hi(xh + t);
+      for (i64 c = c0; c <= c1; ++c) s.reg_cell.push_back(r * nx + c);
+    }
+    s.reg_start[i + 1] = (i64)s.reg_cell.size();
+  }
+  // cell -> segments, ascending
+  const i64 nc = nx * ny, nr = (i64)s.reg_cell.size();
+  s.cell_start.assign(nc + 1, 0);
+  for (i64 k = 0; k < nr; ++k) ++s.cell_start[s.reg_cell[k] + 1];
+  for (i64 c = 0; c < nc; ++c) s.cell_start[c + 1] += s.cell_start[c];
+  s.cell_edge.resize(nr);
+  {
+    std::vector<i64>& fill = s.stamp;  // reused below as the stamps
+    fill.assign(s.cell_start.begin(), s.cell_start.end() - 1);
+    for (i64 i = 0; i < n; ++i)
+      for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k)
+        s.cell_edge[fill[s.reg_cell[k]]++] = i;
+  }
+  s.stamp.assign(n, -1);
+  for (i64 i = 0; i < n; ++i) {
+    const int gi = group[i];
+    for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k) {
+      const i64 c = s.reg_cell[k];
+      for (i64 q = s.cell_start[c]; q < s.cell_start[c + 1]; ++q) {
+        const i64 j = s.cell_edge[q];
+        if (j >= i) break;
+        if (s.stamp[j] == i) continue;
+        s.stamp[j] = i;
+        if (gi >= 0 && group[j] == gi) continue;
+        if (x1[j] < x0[i] || x1[i] < x0[j] || y1[j] < y0[i] || y1[i] < y0[j]) continue;
+        if constexpr (std::is_same_v<decltype(on_pair(j, i)), bool>) {
+          if (!on_pair(j, i)) return true;
+        } else {
+          on_pair(j, i);
+        }
+      }
+    }
   }
   return true;
 }

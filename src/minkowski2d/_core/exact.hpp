@@ -161,6 +161,39 @@ inline int cross_sign_exact(double a0x, double a0y, double a1x, double a1y, doub
 }
 
 // Filtered sign of (a1 - a0) x (b1 - b0) for finite doubles.
+// Collinear points with small or integer coordinates are common and their exact zero is
+// beyond any filter: when the four differences and the two products are exact in double
+// (tails of the error-free transformations zero; magnitudes within [2^-450, 2^450], so
+// no split overflows and no product tail underflows), the rounded difference of the
+// products has the exact sign. Returns 2 when that does not apply.
+inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, double b0x,
+                            double b0y, double b1x, double b1y, double ux, double uy, double vx,
+                            double vy) {
+  auto exact_diff = [](double a, double b, double d) {
+    double bv = a - d, av = d + bv;
+    return (a - av) + (bv - b) == 0.0;
+  };
+  auto in_range = [](double d) {
+    double m = std::fabs(d);
+    return m >= 0x1p-450 && m <= 0x1p450;
+  };
+  if (!(in_range(ux) && in_range(uy) && in_range(vx) && in_range(vy))) return 2;
+  if (!(exact_diff(a1x, a0x, ux) && exact_diff(a1y, a0y, uy) && exact_diff(b1x, b0x, vx) &&
+        exact_diff(b1y, b0y, vy)))
+    return 2;
+  auto prod_tail = [](double a, double b, double p) {
+    double c = SPLITTER * a;
+    double ahi = c - (c - a), alo = a - ahi;
+    c = SPLITTER * b;
+    double bhi = c - (c - b), blo = b - bhi;
+    double err = ((p - ahi * bhi) - alo * bhi) - ahi * blo;
+    return alo * blo - err;
+  };
+  double l = ux * vy, r = uy * vx;
+  if (prod_tail(ux, vy, l) != 0.0 || prod_tail(uy, vx, r) != 0.0) return 2;
+  return (l > r) - (l < r);
+}
+
 inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x, double b0y,
                       double b1x, double b1y) {
   double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
@@ -174,6 +207,8 @@ inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
+  int s = cross_sign_small(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, ux, uy, vx, vy);
+  if (s != 2) return s;
   return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
 }
 

@@ -392,6 +392,8 @@ class Overlay {
   // boundary is empty and the rings have status LIMIT.
   i64 pair_budget = -1;
   bool limited = false;
+  // from this many edges on, candidate pairs come from a grid (boxes.hpp segment_pairs)
+  i64 grid_min = 512;
 
   // The boundary of the selected region as exact edges (global vertex ids).
   void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out) {
@@ -541,6 +543,8 @@ class Overlay {
   std::vector<double> bx0_, bx1_, by0_, by1_;
   std::vector<int> grp_;
   BoxScratch boxes_;
+  std::vector<double> sx0_, sy0_, sx1_, sy1_, stol_;
+  GridScratch grid_;
   void intersect() {
     const i64 n = (i64)ed_.size();
     splits_.clear();
@@ -567,20 +571,41 @@ class Overlay {
       double bx0 = b.x.v - b.x.e * up, bx1 = b.x.v + b.x.e * up;
       double ay0 = a.y.v - a.y.e * up, ay1 = a.y.v + a.y.e * up;
       double by0 = b.y.v - b.y.e * up, by1 = b.y.v + b.y.e * up;
-      bx0_[i] = std::nextafter(std::min(ax0, bx0), -INFINITY);
-      bx1_[i] = std::nextafter(std::max(ax1, bx1), INFINITY);
-      by0_[i] = std::nextafter(std::min(ay0, by0), -INFINITY);
-      by1_[i] = std::nextafter(std::max(ay1, by1), INFINITY);
+      bx0_[i] = next_down(std::min(ax0, bx0));
+      bx1_[i] = next_up(std::max(ax1, bx1));
+      by0_[i] = next_down(std::min(ay0, by0));
+      by1_[i] = next_up(std::max(ay1, by1));
+    }
+    auto on_pair = [&](i64 i, i64 j) {
+      if (pair_budget >= 0 && n_pairs >= pair_budget) {
+        limited = true;
+        return false;
+      }
+      classify(i, j);
+      return true;
+    };
+    if (n >= grid_min) {
+      // many edges: candidates from a grid over the segments themselves
+      sx0_.resize(n);
+      sy0_.resize(n);
+      sx1_.resize(n);
+      sy1_.resize(n);
+      stol_.resize(n);
+      for (i64 i = 0; i < n; ++i) {
+        const Vert &a = g_.verts[vg_[ed_[i].v0]], &b = g_.verts[vg_[ed_[i].v1]];
+        sx0_[i] = a.x.v;
+        sy0_[i] = a.y.v;
+        sx1_[i] = b.x.v;
+        sy1_[i] = b.y.v;
+        stol_[i] = std::max(std::max(a.x.e, a.y.e), std::max(b.x.e, b.y.e)) * (1 + 0x1p-40);
+      }
+      if (segment_pairs(n, sx0_.data(), sy0_.data(), sx1_.data(), sy1_.data(), stol_.data(),
+                        bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), grid_,
+                        on_pair))
+        return;
     }
     box_pairs_grouped(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
-                      ngroups_, boxes_, [&](i64 i, i64 j) {
-                        if (pair_budget >= 0 && n_pairs >= pair_budget) {
-                          limited = true;
-                          return false;
-                        }
-                        classify(i, j);
-                        return true;
-                      });
+                      ngroups_, boxes_, on_pair);
   }
 
   // vertex p strictly between the ends of edge i (p on its line)

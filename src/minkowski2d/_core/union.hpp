@@ -156,10 +156,10 @@ class BoundaryIndex {
       double cx0 = c.x.v - c.x.e * up, cx1 = c.x.v + c.x.e * up;
       double ay0 = a.y.v - a.y.e * up, ay1 = a.y.v + a.y.e * up;
       double cy0 = c.y.v - c.y.e * up, cy1 = c.y.v + c.y.e * up;
-      bx0_[i] = std::nextafter(std::min(ax0, cx0), -INFINITY);
-      bx1_[i] = std::nextafter(std::max(ax1, cx1), INFINITY);
-      by0_[i] = std::nextafter(std::min(ay0, cy0), -INFINITY);
-      by1_[i] = std::nextafter(std::max(ay1, cy1), INFINITY);
+      bx0_[i] = next_down(std::min(ax0, cx0));
+      bx1_[i] = next_up(std::max(ax1, cx1));
+      by0_[i] = next_down(std::min(ay0, cy0));
+      by1_[i] = next_up(std::max(ay1, cy1));
       X0_ = std::min(X0_, bx0_[i]);
       X1_ = std::max(X1_, bx1_[i]);
       Y0_ = std::min(Y0_, by0_[i]);
@@ -421,10 +421,12 @@ class ConvexUnion {
 
   UnionStats st;
   BoundaryIndex& index() { return idx_; }
+  ov::Overlay& overlay() { return o_; }
   bool cull = true;
   i64 leaf = 8;         // pieces per leaf of the cascades
   i64 min_batch = 256;  // edges waiting before a round (at least)
   i64 first_k = 4;     // pieces taken by area before the others (by reach)
+  double round_factor = 1.0;  // a round when the waiting edges reach this times dU
 
   int unite(Src& src, Rings& out) {
     out.clear();
@@ -435,23 +437,24 @@ class ConvexUnion {
     // 1. order (heuristics in double; they decide nothing): the first_k largest pieces,
     // then the others by their reach from the centre of all, farthest first (ties: input
     // order)
-    std::vector<double> area(n);
+    std::vector<double> area(n), reach(n);
     std::vector<P> v;
-    double cx0 = INFINITY, cx1 = -INFINITY, cy0 = INFINITY, cy1 = -INFINITY;
+    double cx0, cx1, cy0, cy1;
+    src.bounds(cx0, cx1, cy0, cy1);
+    const double cx = cx0 / 2 + cx1 / 2, cy = cy0 / 2 + cy1 / 2;
     for (i64 k = 0; k < n; ++k) {
       if (src.get(k, v) != OK) return finish(out, OVERFLOW);
-      double a = 0;
+      double a = 0, r = 0;
       const i64 m = (i64)v.size();
       for (i64 i = 0; i < m; ++i) {
         const P &p = v[i], &q = v[i + 1 < m ? i + 1 : 0];
         a += (p.x.hi - v[0].x.hi) * (q.y.hi - v[0].y.hi) -
              (p.y.hi - v[0].y.hi) * (q.x.hi - v[0].x.hi);
-        cx0 = std::min(cx0, p.x.hi);
-        cx1 = std::max(cx1, p.x.hi);
-        cy0 = std::min(cy0, p.y.hi);
-        cy1 = std::max(cy1, p.y.hi);
+        double dx = p.x.hi - cx, dy = p.y.hi - cy;
+        r = std::max(r, dx * dx + dy * dy);
       }
       area[k] = m >= 3 ? std::max(a, 0.0) : -1;  // -1: no area, skipped
+      reach[k] = r;
     }
     std::vector<std::pair<double, i64>> key;
     key.reserve(n);
@@ -467,21 +470,13 @@ class ConvexUnion {
         order.push_back(key[t].second);
         first[key[t].second] = 1;
       }
-      const double cx = cx0 / 2 + cx1 / 2, cy = cy0 / 2 + cy1 / 2;
       key.clear();
-      for (i64 k = 0; k < n; ++k) {
-        if (area[k] < 0 || first[k]) continue;
-        src.get(k, v);
-        double r = 0;
-        for (const P& p : v) {
-          double dx = p.x.hi - cx, dy = p.y.hi - cy;
-          r = std::max(r, dx * dx + dy * dy);
-        }
-        key.emplace_back(-r, k);
-      }
+      for (i64 k = 0; k < n; ++k)
+        if (area[k] >= 0 && !first[k]) key.emplace_back(-reach[k], k);
       std::sort(key.begin(), key.end());
       for (auto& kk : key) order.push_back(kk.second);
     }
+    std::vector<double>().swap(reach);
     std::vector<double>().swap(area);
     std::vector<std::pair<double, i64>>().swap(key);
     // 2. rounds
@@ -500,7 +495,7 @@ class ConvexUnion {
       for (const P& p : v) g_.point(p.x, p.y);
       ov::add_ring(g_, first, (i64)v.size(), 1, 0, pending_.back());
       pend_edges += (i64)pending_.back().size();
-      if (pend_edges >= std::max(min_batch, (i64)ubnd_.size())) {
+      if (pend_edges >= std::max(min_batch, (i64)(round_factor * (double)ubnd_.size()))) {
         if (!round()) return finish_limit(out);
         pend_edges = 0;
       }
@@ -631,6 +626,17 @@ struct PointSource {
     if (v.size() < 3) v.clear();
     return OK;
   }
+  // a box around all pieces (approximate: for the order only)
+  void bounds(double& x0, double& x1, double& y0, double& y1) const {
+    x0 = y0 = INFINITY;
+    x1 = y1 = -INFINITY;
+    for (const P& p : *pts) {
+      x0 = std::min(x0, p.x.hi);
+      x1 = std::max(x1, p.x.hi);
+      y0 = std::min(y0, p.y.hi);
+      y1 = std::max(y1, p.y.hi);
+    }
+  }
 };
 
 // The sums of two sets of normalized convex pieces (all pairs), merged on demand; the
@@ -658,6 +664,28 @@ struct SumSource {
     else if (v.size() < 3)
       v.clear();
     return OK;
+  }
+  // a box around all sums: the sum of the boxes around the pieces (approximate)
+  void bounds(double& x0, double& x1, double& y0, double& y1) const {
+    double b[2][4];
+    for (int s = 0; s < 2; ++s) {
+      const double* p = s == 0 ? pa : pb;
+      double* q = b[s];
+      q[0] = q[2] = INFINITY;
+      q[1] = q[3] = -INFINITY;
+      for (const Norm& N : s == 0 ? *NA : *NB)
+        for (i64 t = 0; t < N.k; ++t) {
+          i64 i = N.at(t);
+          q[0] = std::min(q[0], p[2 * i]);
+          q[1] = std::max(q[1], p[2 * i]);
+          q[2] = std::min(q[2], p[2 * i + 1]);
+          q[3] = std::max(q[3], p[2 * i + 1]);
+        }
+    }
+    x0 = b[0][0] + b[1][0];
+    x1 = b[0][1] + b[1][1];
+    y0 = b[0][2] + b[1][2];
+    y1 = b[0][3] + b[1][3];
   }
 };
 
