@@ -11,9 +11,9 @@ not multiples of 90) and a seeded sample of ``--pairs`` NFPs ``(i, ri, j, rj)``:
   piece sums in one ``mk.minkowski_sum_many`` call (timed apart: ``sums ms``);
 * **shapely**: ``shapely.union_all`` of those piece sums (as shapely polygons, built
   before the clock starts);
-* **ours**: :func:`ours_union`. THE SLOT: it calls ``mk.minkowski_sum_general(A, −B)``
-  today (decomposition, sums and GEOS union: more than the union alone); point it at the
-  core's exact union of the same ``sums`` when that exists.
+* **ours**: :func:`ours_union`: the core's exact union of exactly those piece sums
+  (``_ext.union_convex``; pieces already inside the union are dropped before noding,
+  see ``src/minkowski2d/_core/union.hpp``), converted to shapely (timed too).
 
 Times: best of ``--reps``, summed over the sample. ``ratio`` = ours / shapely (the goal
 of issue 16: ≤ 0.2, i.e. ≥ 5× faster); the total line adds the geometric mean of the
@@ -37,17 +37,32 @@ from bench_nfp import CLASSIC, DATA, REL
 from bench_nfp_free import free_angles, rotated_rings
 
 import minkowski2d as mk
+from minkowski2d._core import _ext
 
 
 def ours_union(A: np.ndarray, negB: np.ndarray, sums: mk.Ragged):
     """OURS: the union of ``sums``, the convex piece sums of ``A ⊕ negB``, as a shapely
-    geometry.
-
-    SLOT for the core's exact union: until it exists this computes the whole sum with
-    ``mk.minkowski_sum_general(A, negB)`` (its own decomposition, sums and GEOS union;
-    ``sums`` unused), so the ratio is pessimistic for us by the decomposition and sums.
+    geometry: the core's exact union of exactly those convex polygons
+    (``_ext.union_convex``: pieces inside the union so far are dropped before noding,
+    the rest united by the exact overlay; vertices rounded once at the end).
+    ``A`` and ``negB`` are unused. The conversion to shapely is timed too.
     """
-    return mk.minkowski_sum_general(A, negB)
+    xy = np.ascontiguousarray(sums.coords, dtype=np.float64)
+    off = np.ascontiguousarray(sums.offsets, dtype=np.int64)
+    out, ring_off, poly_off, status, _stats, _where = _ext.union_convex(xy, off)
+    if status:
+        raise RuntimeError(f"union_convex: status {status}")
+    return _rings_to_shapely(out, ring_off, poly_off)
+
+
+def _rings_to_shapely(xy: np.ndarray, ring_off: np.ndarray, poly_off: np.ndarray):
+    polys = []
+    for p in range(len(poly_off) - 1):
+        rings = [xy[ring_off[r] : ring_off[r + 1]] for r in range(poly_off[p], poly_off[p + 1])]
+        polys.append(shapely.Polygon(rings[0], rings[1:]))
+    if len(polys) == 1:
+        return polys[0]
+    return shapely.MultiPolygon(polys)
 
 
 def best(f, reps: int):
@@ -70,7 +85,7 @@ def main(argv: list[str] | None = None) -> int:
     print(
         f"python {sys.version.split()[0]}, shapely {shapely.__version__} "
         f"(GEOS {shapely.geos_version_string}), best of {args.reps}; ours = ours_union "
-        "(today: the whole mk.minkowski_sum_general)"
+        "(the core's exact union of the same piece sums, _ext.union_convex)"
     )
     print(
         f"{'instance':9} {'angles':>9} {'NFPs':>5} {'pieces':>7} {'sums ms':>8} "

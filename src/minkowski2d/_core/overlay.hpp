@@ -213,10 +213,48 @@ class Geo {
     }
     int s = fe_sign(axis == 0 ? A.x - B.x : A.y - B.y);
     if (s != UNSURE) return s;
+    {  // the homogeneous comparison in extended precision, certified
+      FEL Xa, Ya, Wa, Xb, Yb, Wb;
+      if (homog_l(a, Xa, Ya, Wa) && homog_l(b, Xb, Yb, Wb)) {
+        s = fe_sign(axis == 0 ? Xa * Wb - Xb * Wa : Ya * Wb - Yb * Wa);
+        if (s != UNSURE) return s;
+      }
+    }
     Dy Xa, Ya, Wa, Xb, Yb, Wb;
     exact(a, Xa, Ya, Wa);
     exact(b, Xb, Yb, Wb);
     return axis == 0 ? (Xa * Wb - Xb * Wa).sign() : (Ya * Wb - Yb * Wa).sign();
+  }
+
+  // extended-precision value of a DD with a certified bound
+  static FEL cfel(DD u) {
+    long double s = (long double)u.hi + (long double)u.lo;
+    return FEL{s, u.lo == 0 ? 0.0L : FEconst<long double>::U * std::fabs(s)};
+  }
+  // exact()'s homogeneous coordinates in extended precision (certified bounds); false
+  // when the sign of W is not certain
+  bool homog_l(i64 v, FEL& X, FEL& Y, FEL& W) const {
+    const Vert& V = verts[v];
+    if (V.p >= 0) {
+      X = cfel(pts[V.p].x);
+      Y = cfel(pts[V.p].y);
+      W = FEL{1.0L, 0.0L};
+      return true;
+    }
+    FEL N, D;
+    cross_nd<FEL>(V.l1, V.l2, N, D, &cfel);
+    int sd = fe_sign(D);
+    if (sd == UNSURE || sd == 0) return false;
+    if (sd < 0) {
+      N = -N;
+      D = -D;
+    }
+    const P &a = pts[lines[V.l1].a], &b = pts[lines[V.l1].b];
+    FEL ax = cfel(a.x), ay = cfel(a.y);
+    X = ax * D + (cfel(b.x) - ax) * N;
+    Y = ay * D + (cfel(b.y) - ay) * N;
+    W = D;
+    return true;
   }
   // the sweep order: x, then y
   int vcmp(i64 a, i64 b) const {
@@ -233,6 +271,14 @@ class Geo {
     FE ax = fe(a.x), ay = fe(a.y);
     int s = fe_sign(cross(fe(b.x) - ax, fe(b.y) - ay, V.x - ax, V.y - ay));
     if (s != UNSURE) return s;
+    {
+      FEL X, Y, W;
+      if (homog_l(v, X, Y, W)) {
+        FEL Ax = cfel(a.x), Ay = cfel(a.y);
+        s = fe_sign(cross(cfel(b.x) - Ax, cfel(b.y) - Ay, X - Ax * W, Y - Ay * W));
+        if (s != UNSURE) return s;
+      }
+    }
     Dy X, Y, W;
     exact(v, X, Y, W);
     Dy Ax = dy(a.x), Ay = dy(a.y);
@@ -401,6 +447,34 @@ class Overlay {
     out.clear();
     for (const Piece& b : bnd_) out.push_back(BEdge{b.line, vg_[b.from], vg_[b.to]});
   }
+  // The same, with some vertices already in sweep order: each list in `sorted` holds
+  // global vertex ids in the order of boundary_vertices() (one id per point, no id in
+  // two lists); the vertices of `in` that no list holds are sorted here. Lists are merged
+  // in linear time, so a cascade does not sort the same vertices at every level.
+  void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out,
+           const std::vector<const std::vector<i64>*>& sorted) {
+    lists_ = &sorted;
+    run(in, rule, out);
+    lists_ = nullptr;
+  }
+  void run(const std::vector<EdgeIn>& in, int rule, Rings& out,
+           const std::vector<const std::vector<i64>*>& sorted) {
+    lists_ = &sorted;
+    run(in, rule, out);
+    lists_ = nullptr;
+  }
+  // After a run: its boundary's vertices (global ids, one per point) in sweep order.
+  void boundary_vertices(std::vector<i64>& out) const {
+    out.clear();
+    if (bnd_.empty()) return;
+    const i64 nv = (i64)av_.size();
+    std::vector<char> used(nv, 0);
+    for (const Piece& b : bnd_) used[b.from] = used[b.to] = 1;
+    for (i64 t = 0; t < nv; ++t) {
+      i64 v = sw_by_rank_[t];
+      if (used[v]) out.push_back(av_[v]);
+    }
+  }
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
     arrange(in, rule);
@@ -453,6 +527,8 @@ class Overlay {
       uf_[a] = b;
   }
 
+  const std::vector<const std::vector<i64>*>* lists_ = nullptr;
+
   void arrange(const std::vector<EdgeIn>& in, int rule) {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
@@ -493,11 +569,27 @@ class Overlay {
       return 0;
     }
     int s = fe_sign(FE{a.x, a.ex} - FE{b.x, b.ex});
-    if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 0);
+    if (s == UNSURE) {
+      if (same_vertex(a.g, b.g)) return 0;
+      s = g_.coord_cmp(a.g, b.g, 0);
+    }
     if (s != 0) return s;
     s = fe_sign(FE{a.y, a.ey} - FE{b.y, b.ey});
     if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 1);
     return s;
+  }
+  // certainly the same point without arithmetic: the same id, or crossings of the same
+  // two lines (false: not known)
+  bool same_vertex(i64 a, i64 b) const {
+    if (a == b) return true;
+    const Vert &A = g_.verts[a], &B = g_.verts[b];
+    if (A.p >= 0 || B.p >= 0) return false;
+    return (A.l1 == B.l1 && A.l2 == B.l2) || (A.l1 == B.l2 && A.l2 == B.l1);
+  }
+  // along(line, a, b) with that shortcut
+  int along_s(i64 line, i64 a, i64 b) const {
+    if (same_vertex(a, b)) return 0;
+    return g_.along(line, a, b);
   }
   // global id -> local id of this run (valid when its stamp is the run's)
   struct G2L {
@@ -507,21 +599,49 @@ class Overlay {
   std::vector<G2L> g2l_;
   std::uint32_t run_stamp_ = 0;
 
+  std::vector<VKey> vk2_, vk3_;
+  // merges the sorted sequence b into a (sorted): the result in a
+  void merge_keys(std::vector<VKey>& a, const std::vector<VKey>& b) {
+    if (b.empty()) return;
+    if (a.empty()) {
+      a = b;
+      return;
+    }
+    vk3_.resize(a.size() + b.size());
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), vk3_.begin(),
+               [&](const VKey& x, const VKey& y) { return vkcmp(x, y) < 0; });
+    a.swap(vk3_);
+  }
+
   void local_vertices(const std::vector<EdgeIn>& in) {
     if (g2l_.size() < g_.verts.size()) g2l_.resize(g_.verts.size() + g_.verts.size() / 2, G2L{0, 0});
     if (++run_stamp_ == 0) {
       for (G2L& q : g2l_) q.stamp = 0;
       run_stamp_ = 1;
     }
+    // the presorted lists, merged
     vk_.clear();
+    if (lists_)
+      for (const std::vector<i64>* L : *lists_) {
+        vk2_.clear();
+        for (i64 v : *L)
+          if (g2l_[v].stamp != run_stamp_) {
+            g2l_[v].stamp = run_stamp_;
+            vk2_.push_back(vkey(v));
+          }
+        merge_keys(vk_, vk2_);
+      }
+    // the others, sorted
+    vk2_.clear();
     for (const EdgeIn& e : in)
       for (i64 v : {e.v0, e.v1})
         if (g2l_[v].stamp != run_stamp_) {
           g2l_[v].stamp = run_stamp_;
-          vk_.push_back(vkey(v));
+          vk2_.push_back(vkey(v));
         }
-    std::sort(vk_.begin(), vk_.end(),
+    std::sort(vk2_.begin(), vk2_.end(),
               [&](const VKey& a, const VKey& b) { return vkcmp(a, b) < 0; });
+    merge_keys(vk_, vk2_);
     vg_.clear();
     for (std::size_t t = 0; t < vk_.size(); ++t) {
       if (t == 0 || vkcmp(vk_[t - 1], vk_[t]) != 0) vg_.push_back(vk_[t].g);
@@ -657,23 +777,30 @@ class Overlay {
   }
 
   // step 3: splits sorted along their edges, equal ones united
+  std::vector<std::int8_t> edir_;
   void split() {
     const i64 nv0 = (i64)vg_.size();
     uf_.resize(nv0 + newv_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
+    // each split edge's direction against its line (+1: v0 -> v1 runs along it)
+    edir_.resize(ed_.size());
+    for (std::size_t k = 0; k < splits_.size(); ++k)
+      if (k == 0 || splits_[k].edge != splits_[k - 1].edge) {
+        const EdgeIn& e = ed_[splits_[k].edge];
+        edir_[splits_[k].edge] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
+      }
     std::sort(splits_.begin(), splits_.end(), [&](const Split& a, const Split& b) {
       if (a.edge != b.edge) return a.edge < b.edge;
       if (a.node == b.node) return false;
       const EdgeIn& e = ed_[a.edge];
       // along the edge's own direction (v0 -> v1)
-      int s = g_.along(e.line, gid(a.node), gid(b.node));
-      int d = g_.along(e.line, vg_[e.v1], vg_[e.v0]);
-      return s * d < 0;
+      int s = along_s(e.line, gid(a.node), gid(b.node));
+      return s * edir_[a.edge] < 0;
     });
     for (std::size_t k = 1; k < splits_.size(); ++k) {
       const Split &a = splits_[k - 1], &b = splits_[k];
       if (a.edge == b.edge && a.node != b.node &&
-          g_.along(ed_[a.edge].line, gid(a.node), gid(b.node)) == 0)
+          along_s(ed_[a.edge].line, gid(a.node), gid(b.node)) == 0)
         unite(a.node, b.node);
     }
     // representatives: roots; a new vertex united with an input one maps to it
@@ -824,7 +951,8 @@ class Overlay {
       std::size_t lo = 0, hi = status.size();
       while (lo < hi) {
         std::size_t mid = (lo + hi) / 2;
-        if (side(ps[status[mid]], v) > 0)
+        const Piece& e = ps[status[mid]];
+        if (e.r != v && side(e, v) > 0)  // v is on the pieces that end at v
           lo = mid + 1;
         else
           hi = mid;

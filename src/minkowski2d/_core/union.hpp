@@ -424,7 +424,7 @@ class ConvexUnion {
   ov::Overlay& overlay() { return o_; }
   bool cull = true;
   i64 leaf = 8;         // pieces per leaf of the cascades
-  i64 min_batch = 256;  // edges waiting before a round (at least)
+  i64 min_batch = 32;   // edges waiting before a round (at least)
   i64 first_k = 4;     // pieces taken by area before the others (by reach)
   double round_factor = 1.0;  // a round when the waiting edges reach this times dU
 
@@ -481,11 +481,13 @@ class ConvexUnion {
     std::vector<std::pair<double, i64>>().swap(key);
     // 2. rounds
     ubnd_.clear();
+    uverts_.clear();
     pending_.clear();
     i64 pend_edges = 0;
     for (i64 k : order) {
       src.get(k, v);
-      if (cull && idx_.covers(v.data(), (i64)v.size())) {
+      const bool cvx = src.convex(k);
+      if (cull && cvx && idx_.covers(v.data(), (i64)v.size())) {
         ++st.culled;
         continue;
       }
@@ -494,6 +496,8 @@ class ConvexUnion {
       i64 first = (i64)g_.pts.size();
       for (const P& p : v) g_.point(p.x, p.y);
       ov::add_ring(g_, first, (i64)v.size(), 1, 0, pending_.back());
+      if (!cvx)  // its edges may cross each other: no group
+        for (EdgeIn& e : pending_.back()) e.group = -2;
       pend_edges += (i64)pending_.back().size();
       if (pend_edges >= std::max(min_batch, (i64)(round_factor * (double)ubnd_.size()))) {
         if (!round()) return finish_limit(out);
@@ -501,12 +505,7 @@ class ConvexUnion {
       }
     }
     // 3. the last round, as rings
-    std::vector<BEdge> vb;
-    if (!cascade(pending_, vb)) return finish_limit(out);
-    std::vector<EdgeIn> in;
-    add_boundary(ubnd_, 0, in);
-    add_boundary(vb, 1, in);
-    if (!run(in, out)) return finish_limit(out);
+    if (!absorb(out)) return finish_limit(out);
     return out.status;
   }
 
@@ -515,7 +514,8 @@ class ConvexUnion {
   ov::Overlay o_;
   BoundaryIndex idx_;
   i64 budget_;
-  std::vector<BEdge> ubnd_;
+  std::vector<BEdge> ubnd_;   // the boundary of the union so far
+  std::vector<i64> uverts_;   // its vertices in sweep order
   std::vector<std::vector<EdgeIn>> pending_;
 
   int finish(Rings& out, int code) {
@@ -530,9 +530,10 @@ class ConvexUnion {
   }
 
   template <class Out>
-  bool run(const std::vector<EdgeIn>& in, Out& out) {
+  bool run(const std::vector<EdgeIn>& in, Out& out,
+           const std::vector<const std::vector<i64>*>& sorted = {}) {
     o_.pair_budget = budget_ < 0 ? -1 : std::max<i64>(0, budget_ - st.pairs);
-    o_.run(in, ov::UNION, out);
+    o_.run(in, ov::UNION, out, sorted);
     ++st.runs;
     st.pairs += o_.n_pairs;
     st.crossings += o_.n_crossings;
@@ -542,54 +543,147 @@ class ConvexUnion {
   // pending pieces united with U: the new U (and its index)
   bool round() {
     ++st.rounds;
-    std::vector<BEdge> vb;
-    if (!cascade(pending_, vb)) return false;
-    pending_.clear();
-    std::vector<EdgeIn> in;
-    add_boundary(ubnd_, 0, in);
-    add_boundary(vb, 1, in);
     std::vector<BEdge> nb;
-    if (!run(in, nb)) return false;
+    if (!absorb(nb)) return false;
     ubnd_.swap(nb);
+    o_.boundary_vertices(uverts_);
     if (cull) idx_.build(ubnd_);
     return true;
   }
 
-  // the union of parts as boundary edges: a balanced tree over the parts sorted by x
-  bool cascade(std::vector<std::vector<EdgeIn>>& parts, std::vector<BEdge>& out) {
+  // U united with the pending pieces, as boundary edges or rings: few pieces in one run
+  // with dU, more by a cascade first
+  template <class Out>
+  bool absorb(Out& out) {
+    std::vector<EdgeIn> in;
+    bool ok;
+    if ((i64)pending_.size() <= leaf) {
+      add_boundary(ubnd_, 0, in);
+      std::vector<i64> ord(pending_.size());
+      std::iota(ord.begin(), ord.end(), 0);
+      leaf_edges(pending_, ord, 0, ord.size(), in, ubnd_.empty() ? 0 : 1);
+      ok = ubnd_.empty() ? run(in, out) : run(in, out, {&uverts_});
+    } else if (ubnd_.empty()) {
+      ok = cascade(pending_, out);
+    } else {
+      std::vector<BEdge> vb;
+      std::vector<i64> vv;
+      ok = cascade(pending_, vb, vv);
+      if (ok) {
+        add_boundary(ubnd_, 0, in);
+        add_boundary(vb, 1, in);
+        ok = run(in, out, {&uverts_, &vv});
+      }
+    }
+    pending_.clear();
+    return ok;
+  }
+
+  // the union of parts as boundary edges (and their vertices in sweep order), or as
+  // rings: a balanced tree over the parts in the order of a Hilbert curve
+  bool cascade(std::vector<std::vector<EdgeIn>>& parts, std::vector<BEdge>& out,
+               std::vector<i64>& outv) {
+    out.clear();
+    outv.clear();
+    if (parts.empty()) return true;
+    std::vector<i64> ord;
+    spatial_order(parts, ord);
+    return rec(parts, ord, 0, ord.size(), out, outv);
+  }
+  template <class Out>
+  bool cascade(std::vector<std::vector<EdgeIn>>& parts, Out& out) {
     out.clear();
     if (parts.empty()) return true;
-    std::vector<std::pair<double, i64>> cx(parts.size());
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      double lo = INFINITY, hi = -INFINITY;
-      for (const EdgeIn& e : parts[k]) {
-        lo = std::min(lo, g_.verts[e.v0].x.v);
-        hi = std::max(hi, g_.verts[e.v0].x.v);
+    std::vector<i64> ord;
+    spatial_order(parts, ord);
+    std::vector<EdgeIn> in;
+    if ((i64)parts.size() <= leaf) {
+      leaf_edges(parts, ord, 0, ord.size(), in);
+      return run(in, out);
+    }
+    std::size_t n = ord.size(), groups = (n + leaf - 1) / leaf, mid = (groups / 2) * leaf;
+    std::vector<BEdge> a, b;
+    std::vector<i64> av, bv;
+    if (!rec(parts, ord, 0, mid, a, av) || !rec(parts, ord, mid, n, b, bv)) return false;
+    add_boundary(a, 0, in);
+    add_boundary(b, 1, in);
+    return run(in, out, {&av, &bv});
+  }
+  // the edges of parts ord[lo:hi], each part its own group (from `first`) unless it may
+  // cross itself
+  void leaf_edges(const std::vector<std::vector<EdgeIn>>& parts, const std::vector<i64>& ord,
+                  std::size_t lo, std::size_t hi, std::vector<EdgeIn>& in, int first = 0) const {
+    for (std::size_t k = lo; k < hi; ++k)
+      for (EdgeIn e : parts[ord[k]]) {
+        e.group = e.group == -2 ? -1 : first + (int)(k - lo);
+        in.push_back(e);
       }
-      cx[k] = {lo + hi, (i64)k};
+  }
+  void spatial_order(const std::vector<std::vector<EdgeIn>>& parts, std::vector<i64>& ord) {
+    // the parts along a Hilbert curve through their box centres (neighbours share leaves)
+    std::vector<double> mx(parts.size()), my(parts.size());
+    double X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+      for (const EdgeIn& e : parts[k]) {
+        const ov::Vert& V = g_.verts[e.v0];
+        x0 = std::min(x0, V.x.v);
+        x1 = std::max(x1, V.x.v);
+        y0 = std::min(y0, V.y.v);
+        y1 = std::max(y1, V.y.v);
+      }
+      mx[k] = x0 / 2 + x1 / 2;
+      my[k] = y0 / 2 + y1 / 2;
+      X0 = std::min(X0, mx[k]);
+      X1 = std::max(X1, mx[k]);
+      Y0 = std::min(Y0, my[k]);
+      Y1 = std::max(Y1, my[k]);
+    }
+    std::vector<std::pair<u64, i64>> cx(parts.size());
+    const double sx = X1 > X0 ? 65535.0 / (X1 - X0) : 0.0, sy = Y1 > Y0 ? 65535.0 / (Y1 - Y0) : 0.0;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      double fx = (mx[k] - X0) * sx, fy = (my[k] - Y0) * sy;
+      u64 ix = fx > 0 ? (u64)std::min(fx, 65535.0) : 0, iy = fy > 0 ? (u64)std::min(fy, 65535.0) : 0;
+      cx[k] = {hilbert(ix, iy), (i64)k};
     }
     std::sort(cx.begin(), cx.end());
-    std::vector<i64> ord(parts.size());
+    ord.resize(parts.size());
     for (std::size_t k = 0; k < parts.size(); ++k) ord[k] = cx[k].second;
-    return rec(parts, ord, 0, ord.size(), out);
+  }
+  // index of (x, y) (16 bits each) along the Hilbert curve
+  static u64 hilbert(u64 x, u64 y) {
+    const u64 n = 1u << 16;
+    u64 d = 0;
+    for (u64 s = n / 2; s > 0; s /= 2) {
+      u64 rx = (x & s) > 0, ry = (y & s) > 0;
+      d += s * s * ((3 * rx) ^ ry);
+      if (ry == 0) {
+        if (rx == 1) {
+          x = n - 1 - x;
+          y = n - 1 - y;
+        }
+        std::swap(x, y);
+      }
+    }
+    return d;
   }
   bool rec(const std::vector<std::vector<EdgeIn>>& parts, const std::vector<i64>& ord,
-           std::size_t lo, std::size_t hi, std::vector<BEdge>& out) {
+           std::size_t lo, std::size_t hi, std::vector<BEdge>& out, std::vector<i64>& outv) {
     std::vector<EdgeIn> in;
     if ((i64)(hi - lo) <= leaf) {
-      for (std::size_t k = lo; k < hi; ++k)
-        for (EdgeIn e : parts[ord[k]]) {
-          e.group = (int)(k - lo);
-          in.push_back(e);
-        }
+      leaf_edges(parts, ord, lo, hi, in);
+      if (!run(in, out)) return false;
     } else {
       std::size_t n = hi - lo, groups = (n + leaf - 1) / leaf, mid = lo + (groups / 2) * leaf;
       std::vector<BEdge> a, b;
-      if (!rec(parts, ord, lo, mid, a) || !rec(parts, ord, mid, hi, b)) return false;
+      std::vector<i64> av, bv;
+      if (!rec(parts, ord, lo, mid, a, av) || !rec(parts, ord, mid, hi, b, bv)) return false;
       add_boundary(a, 0, in);
       add_boundary(b, 1, in);
+      if (!run(in, out, {&av, &bv})) return false;
     }
-    return run(in, out);
+    o_.boundary_vertices(outv);
+    return true;
   }
 };
 
@@ -615,12 +709,15 @@ inline void strictly_convex(std::vector<P>& v) {
   v.swap(w);
 }
 
-// Convex polygons given as DD points and offsets (each strictly convex, counter-
-// clockwise).
+// Polygons given as DD points and offsets, each strictly convex and counter-clockwise,
+// or (flag 0 in `convex`) any ring, counter-clockwise at its lowest vertex: united with
+// the rest (winding number >= 1), never tested for containment.
 struct PointSource {
   const std::vector<P>* pts;
   const std::vector<i64>* off;
+  const std::vector<char>* convex_flags = nullptr;
   i64 size() const { return (i64)off->size() - 1; }
+  bool convex(i64 k) const { return !convex_flags || (*convex_flags)[k]; }
   int get(i64 k, std::vector<P>& v) const {
     v.assign(pts->begin() + (*off)[k], pts->begin() + (*off)[k + 1]);
     if (v.size() < 3) v.clear();
@@ -645,6 +742,7 @@ struct SumSource {
   const double *pa, *pb;
   const std::vector<Norm>*NA, *NB;
   i64 size() const { return (i64)NA->size() * (i64)NB->size(); }
+  bool convex(i64) const { return true; }
   int get(i64 k, std::vector<P>& v) const {
     const i64 nb = (i64)NB->size();
     const Norm &A = (*NA)[k / nb], &B = (*NB)[k % nb];
