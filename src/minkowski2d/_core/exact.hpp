@@ -161,11 +161,13 @@ inline int cross_sign_exact(double a0x, double a0y, double a1x, double a1y, doub
 }
 
 // Filtered sign of (a1 - a0) x (b1 - b0) for finite doubles.
-// Collinear points with small or integer coordinates are common and their exact zero is
-// beyond any filter: when the four differences and the two products are exact in double
-// (tails of the error-free transformations zero; magnitudes within [2^-450, 2^450], so
-// no split overflows and no product tail underflows), the rounded difference of the
-// products has the exact sign. Returns 2 when that does not apply.
+// Collinear points are common (shared and overlapping edges) and their exact zero is
+// beyond any filter. Nearby coordinates have exact differences (Sterbenz), and then the
+// determinant is exactly l + lt - (r + rt) with the products and their error-free tails
+// (Dekker): its sign is that of the sum of four doubles, found exactly by an expansion
+// (two_sum; nonoverlapping, zeros dropped; the last component is the largest). Applies
+// when the four differences are exact (two_diff tails zero) and lie within
+// [2^-450, 2^450] (no split overflows, no tail underflows); returns 2 otherwise.
 inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, double b0x,
                             double b0y, double b1x, double b1y, double ux, double uy, double vx,
                             double vy) {
@@ -189,9 +191,35 @@ inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, doub
     double err = ((p - ahi * bhi) - alo * bhi) - ahi * blo;
     return alo * blo - err;
   };
-  double l = ux * vy, r = uy * vx;
-  if (prod_tail(ux, vy, l) != 0.0 || prod_tail(uy, vx, r) != 0.0) return 2;
-  return (l > r) - (l < r);
+  auto tsum = [](double a, double b, double& x, double& y) {
+    x = a + b;
+    double bv = x - a, av = x - bv;
+    y = (a - av) + (b - bv);
+  };
+  const double l = ux * vy, r = uy * vx;
+  const double lt = prod_tail(ux, vy, l), rt = prod_tail(uy, vx, r);
+  if (lt == 0.0 && rt == 0.0) return (l > r) - (l < r);
+  // e = l - r as a nonoverlapping expansion, then + lt, then - rt (grow, zeros dropped)
+  double e[4];
+  int m = 0;
+  {
+    double x, y;
+    tsum(l, -r, x, y);
+    if (y != 0.0) e[m++] = y;
+    if (x != 0.0 || m == 0) e[m++] = x;
+  }
+  for (double b : {lt, -rt}) {
+    double q = b, hh;
+    int h = 0;
+    for (int k = 0; k < m; ++k) {
+      tsum(q, e[k], q, hh);
+      if (hh != 0.0) e[h++] = hh;
+    }
+    if (q != 0.0 || h == 0) e[h++] = q;
+    m = h;
+  }
+  const double top = e[m - 1];
+  return (top > 0) - (top < 0);
 }
 
 inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x, double b0y,

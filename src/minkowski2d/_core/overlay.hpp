@@ -854,6 +854,7 @@ class Overlay {
 
   // step 4: pieces
   std::vector<Piece> raw_;
+  std::vector<std::pair<u64, std::uint32_t>> pkey_;
   void pieces() {
     std::vector<Piece>& raw = raw_;
     raw.clear();
@@ -886,17 +887,19 @@ class Overlay {
       }
       emit(lid_[e.v1]);
     }
-    std::sort(raw.begin(), raw.end(), [](const Piece& a, const Piece& b) {
-      return a.l != b.l ? a.l < b.l : a.r < b.r;
-    });
+    // sorted by (l, r) through small keys; pieces joining the same two vertices merged
+    pkey_.resize(raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      pkey_[i] = {((u64)raw[i].l << 32) | (u64)raw[i].r, (std::uint32_t)i};
+    std::sort(pkey_.begin(), pkey_.end());
     pcs_.clear();
-    for (std::size_t i = 0; i < raw.size();) {
+    for (std::size_t i = 0; i < pkey_.size();) {
       std::size_t j = i;
-      Piece pc = raw[i];
+      Piece pc = raw[pkey_[i].second];
       pc.c0 = pc.c1 = 0;
-      for (; j < raw.size() && raw[j].l == raw[i].l && raw[j].r == raw[i].r; ++j) {
-        pc.c0 += raw[j].c0;
-        pc.c1 += raw[j].c1;
+      for (; j < pkey_.size() && pkey_[j].first == pkey_[i].first; ++j) {
+        pc.c0 += raw[pkey_[j].second].c0;
+        pc.c1 += raw[pkey_[j].second].c1;
       }
       if (pc.c0 != 0 || pc.c1 != 0) pcs_.push_back(pc);
       i = j;

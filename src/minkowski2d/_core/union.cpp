@@ -79,7 +79,6 @@ nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 budget, bool cull) {
   for (i64 k = 0; k < np; ++k)
     if (off[k + 1] < off[k]) throw nb::value_error("union_convex: bad offsets");
   const double* xy = XY.data();
-  mk::ov::Geo g;
   mk::ov::Rings out;
   mk::un::UnionStats st;
   i64 bad_poly = -1, bad_vertex = -1;
@@ -118,10 +117,13 @@ nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 budget, bool cull) {
     }
     if (out.status == mk::OK) {
       mk::un::PointSource src{&pts, &po, &convex};
-      mk::un::ConvexUnion<mk::un::PointSource> u(g, budget);
-      u.cull = cull;
-      u.unite(src, out);
-      st = u.st;
+      mk::un::with_workspace([&](mk::un::Workspace& w) {
+        w.u.cull = cull;
+        w.u.set_budget(budget);
+        w.u.unite(src, out);
+        st = w.u.st;
+        return 0;
+      });
     }
   }
   return result(out, st, bad_poly, bad_vertex);
@@ -141,14 +143,13 @@ nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64>
     for (i64 k = 0; k < np; ++k)
       if (o[k + 1] < o[k]) throw nb::value_error("sum_pieces: bad offsets");
   }
-  mk::ov::Geo g;
   mk::ov::Rings out;
   mk::un::UnionStats st;
   i64 bad = -1;
   {
     nb::gil_scoped_release nogil;
-    mk::un::sum_pieces_union(g, PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(),
-                             OB.data(), (i64)OB.shape(0) - 1, out, st, budget, cull, &bad);
+    mk::un::sum_pieces_union(PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(), OB.data(),
+                             (i64)OB.shape(0) - 1, out, st, budget, cull, &bad);
   }
   return result(out, st, bad, -1);
 }

@@ -41,6 +41,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -414,10 +415,11 @@ struct UnionStats {
 // A source of convex pieces: size(), and get(k, v) filling v with piece k's vertices
 // (DD points, strictly convex, counter-clockwise); fewer than 3 vertices: no area (the
 // piece is skipped).
-template <class Src>
 class ConvexUnion {
  public:
-  ConvexUnion(Geo& g, i64 budget = -1) : g_(g), o_(g), idx_(g), budget_(budget) {}
+  explicit ConvexUnion(Geo& g, i64 budget = -1) : g_(g), o_(g), idx_(g), budget_(budget) {}
+  i64 budget() const { return budget_; }
+  void set_budget(i64 b) { budget_ = b; }
 
   UnionStats st;
   BoundaryIndex& index() { return idx_; }
@@ -428,6 +430,7 @@ class ConvexUnion {
   i64 first_k = 4;     // pieces taken by area before the others (by reach)
   double round_factor = 1.0;  // a round when the waiting edges reach this times dU
 
+  template <class Src>
   int unite(Src& src, Rings& out) {
     out.clear();
     const i64 n = src.size();
@@ -688,6 +691,49 @@ class ConvexUnion {
 };
 
 // ------------------------------------------------------------------------------------
+// one thread's buffers, kept between calls
+
+// The geometry and the union (with its overlay's buffers) of one thread, reused by the
+// next call: a small union then allocates almost nothing (allocation was a tenth of the
+// work of the unions of bench_union.py). Dropped after a call whose geometry grew beyond
+// KEEP vertices, so a large call does not pin its memory.
+struct Workspace {
+  static constexpr std::size_t KEEP = std::size_t(1) << 18;
+  Geo g;
+  ConvexUnion u{g};
+  void clear() {
+    g.pts.clear();
+    g.lines.clear();
+    g.verts.clear();
+    u.cull = true;
+    u.set_budget(-1);
+  }
+};
+
+// f(Workspace&) with this thread's workspace (a fresh one when called re-entrantly)
+template <class F>
+inline auto with_workspace(F&& f) {
+  thread_local std::unique_ptr<Workspace> w;
+  thread_local bool busy = false;
+  if (busy) {
+    auto tmp = std::make_unique<Workspace>();
+    return f(*tmp);
+  }
+  struct Guard {
+    bool& b;
+    std::unique_ptr<Workspace>& w;
+    ~Guard() {
+      b = false;
+      if (w && w->g.verts.capacity() > Workspace::KEEP) w.reset();
+    }
+  } guard{busy, w};
+  busy = true;
+  if (!w) w = std::make_unique<Workspace>();
+  w->clear();
+  return f(*w);
+}
+
+// ------------------------------------------------------------------------------------
 // sources: size(), and get(k, v) -> OK (v: piece k's vertices, strictly convex, counter-
 // clockwise, or empty when it has no area) or OVERFLOW (a coordinate is not finite)
 
@@ -788,11 +834,11 @@ struct SumSource {
 };
 
 // The decomposition method: all sums of the convex pieces of A (pa, offsets oa, na
-// pieces) and of B, united. Returns OK, a piece's normalize code (*bad: which piece, B's
-// after A's), OVERFLOW or LIMIT; the rings in out.
-inline int sum_pieces_union(Geo& g, const double* pa, const i64* oa, i64 na, const double* pb,
-                            const i64* ob, i64 nb, Rings& out, UnionStats& st, i64 budget = -1,
-                            bool cull = true, i64* bad = nullptr) {
+// pieces) and of B, united by u (whose geometry is g). Returns OK, a piece's normalize
+// code (*bad: which piece, B's after A's), OVERFLOW or LIMIT; the rings in out.
+inline int sum_pieces_union(ConvexUnion& u, const double* pa, const i64* oa, i64 na,
+                            const double* pb, const i64* ob, i64 nb, Rings& out,
+                            i64* bad = nullptr) {
   out.clear();
   std::vector<Norm> NA(na), NB(nb);
   i64 big = 1;
@@ -814,11 +860,20 @@ inline int sum_pieces_union(Geo& g, const double* pa, const i64* oa, i64 na, con
     }
   }
   SumSource src{pa, pb, &NA, &NB};
-  ConvexUnion<SumSource> u(g, budget);
-  u.cull = cull;
-  int code = u.unite(src, out);
-  st = u.st;
-  return code;
+  return u.unite(src, out);
+}
+
+// The same with this thread's workspace (see with_workspace).
+inline int sum_pieces_union(const double* pa, const i64* oa, i64 na, const double* pb,
+                            const i64* ob, i64 nb, Rings& out, UnionStats& st, i64 budget = -1,
+                            bool cull = true, i64* bad = nullptr) {
+  return with_workspace([&](Workspace& w) {
+    w.u.cull = cull;
+    w.u.set_budget(budget);
+    int code = sum_pieces_union(w.u, pa, oa, na, pb, ob, nb, out, bad);
+    st = w.u.st;
+    return code;
+  });
 }
 
 }  // namespace un
