@@ -383,6 +383,10 @@ class Overlay {
 
   // counters (for tests and limits)
   i64 n_pairs = 0, n_crossings = 0, n_vertices = 0, n_edges = 0;
+  // work budget: a run that would node more crossings stops (exceeded() is then true
+  // and the result is empty); the caller reports RESOURCE
+  i64 max_crossings = (i64)1 << 62;
+  bool exceeded() const { return over_; }
 
   // The boundary of the selected region as exact edges (global vertex ids).
   void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out) {
@@ -393,6 +397,11 @@ class Overlay {
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
     arrange(in, rule);
+    if (over_) {
+      out.clear();
+      out.status = RESOURCE;
+      return;
+    }
     trace(out);
   }
 
@@ -419,6 +428,7 @@ class Overlay {
   };
   std::vector<Piece> pcs_, bnd_;
   int rule_ = UNION;
+  bool over_ = false;
 
   i64 find(i64 a) {
     while (uf_[a] != a) {
@@ -440,8 +450,16 @@ class Overlay {
   void arrange(const std::vector<EdgeIn>& in, int rule) {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
+    over_ = false;
     local_vertices(in);
     intersect();
+    if (over_) {
+      splits_.clear();
+      newv_.clear();
+      ed_.clear();
+      bnd_.clear();
+      return;
+    }
     split();
     order();
     pieces();
@@ -511,6 +529,7 @@ class Overlay {
   }
 
   void classify(i64 i, i64 j) {
+    if (over_) return;
     ++n_pairs;
     const EdgeIn &s = ed_[i], &t = ed_[j];
     const i64 p = s.v0, q = s.v1, r = t.v0, u = t.v1;
@@ -538,7 +557,10 @@ class Overlay {
       return;
     }
     // a proper crossing: a new vertex
-    ++n_crossings;
+    if (++n_crossings > max_crossings) {
+      over_ = true;
+      return;
+    }
     i64 node = (i64)vg_.size() + (i64)newv_.size();
     newv_.push_back(g_.vert_cross(s.line, t.line));
     splits_.push_back(Split{i, node});
@@ -959,10 +981,12 @@ class Cascade {
  public:
   explicit Cascade(Geo& g, i64 leaf = 4) : g_(g), o_(g), leaf_(leaf < 1 ? 1 : leaf) {}
   i64 n_crossings = 0, n_runs = 0;
+  i64 max_crossings = (i64)1 << 62;  // over all runs; then RESOURCE
 
   void unite(const std::vector<std::vector<EdgeIn>>& parts, Rings& out) {
     out.clear();
     if (parts.empty()) return;
+    o_.max_crossings = max_crossings - n_crossings;
     std::vector<EdgeIn> in;
     if ((i64)parts.size() <= leaf_) {
       for (auto& p : parts) in.insert(in.end(), p.begin(), p.end());
@@ -971,6 +995,10 @@ class Cascade {
       std::vector<BEdge> a, b;
       rec(parts, 0, mid, a);
       rec(parts, mid, parts.size(), b);
+      if (o_.exceeded()) {
+        out.status = RESOURCE;
+        return;
+      }
       add_boundary(a, 0, in);
       add_boundary(b, 0, in);
     }
@@ -986,6 +1014,7 @@ class Cascade {
   void count() {
     n_crossings += o_.n_crossings;
     ++n_runs;
+    o_.max_crossings = max_crossings - n_crossings;
   }
   std::size_t split_point(std::size_t lo, std::size_t hi) const {
     // leaves of size leaf_: split at a multiple of leaf_ near the middle
@@ -994,6 +1023,7 @@ class Cascade {
   }
   void rec(const std::vector<std::vector<EdgeIn>>& parts, std::size_t lo, std::size_t hi,
            std::vector<BEdge>& out) {
+    if (o_.exceeded()) return;
     std::vector<EdgeIn> in;
     if ((i64)(hi - lo) <= leaf_) {
       for (std::size_t k = lo; k < hi; ++k) in.insert(in.end(), parts[k].begin(), parts[k].end());
