@@ -19,14 +19,11 @@ What is compared, strictly (the output contract of issue 16):
   and -0.0 are equal), and the holes' vertex sets equal CGAL's as a multiset of sets;
 * the start vertex and the orientation are not compared (the order of a ring is).
 
-Today the library's non-convex path nodes and unites with GEOS in floating point and
-many comparisons fail: intersection vertices an ulp off, near-collinear vertices kept or
-lost, GEOS errors, once in a while a lost region. The comparisons that fail today are
-listed by id in ``tests/cgal_crosscheck_xfail.txt`` and marked
-``xfail(strict=False)`` at parametrization with the reason below; none is skipped. A
-comparison that starts to pass reports XPASS. Regenerate the list (after a change to the
-overlay) with ``python -m tests.test_cgal_crosscheck --write-xfail``; ``python -m
-tests.test_cgal_crosscheck [-v]`` prints the tally by kind of mismatch (and each one).
+Every comparison is strict: no xfail, no skip (but for a missing CGAL or data). Before
+the exact overlay (when GEOS noded and united in floating point) 906 of these 1,452
+comparisons failed: intersection vertices an ulp off, near-collinear vertices kept or
+lost, GEOS errors, a lost region. ``python -m tests.test_cgal_crosscheck [-v]`` prints
+the tally by kind of mismatch (and each one).
 
 Also here: the two reproducers of issue 16 (a dagli part rotated by 105 degrees with
 itself: area 107.99999...; a shirts pair that GEOS fails to node with
@@ -52,17 +49,15 @@ from tests import cgal_peer
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT.parent / "shared" / "data" / "esicup"
-XFAIL_FILE = Path(__file__).with_name("cgal_crosscheck_xfail.txt")
 INSTANCES = ("dagli", "shirts", "fu", "albano", "jakobs1")
 ANGLES = (15, 105, 200, 315)
 PAIRS_PER_INSTANCE = 6  # × 16 angle combinations = 96 NFPs per instance
 VARIANTS = ("decomposition", "convolution", "no_fit_polygons")
-REASON = "GEOS float overlay; exact overlay pending (issue 16)"
 AREA_REL = 1e-9
 
 
 # --------------------------------------------------------------------------------------
-# the sample (fixed: the ids, and so the xfail list, do not move between runs)
+# the sample (fixed: the ids do not move between runs)
 
 
 @functools.cache
@@ -226,13 +221,6 @@ def compare(g, ref: cgal_peer.CgalResult) -> tuple[str, str] | None:
 # the tests
 
 
-def _known_failing() -> set[str]:
-    if not XFAIL_FILE.exists():
-        return set()
-    lines = XFAIL_FILE.read_text().splitlines()
-    return {ln.strip() for ln in lines if ln.strip() and not ln.startswith("#")}
-
-
 def _params() -> list:
     if not DATA.is_dir():
         return [
@@ -243,14 +231,7 @@ def _params() -> list:
                 marks=pytest.mark.skip(reason=f"ESICUP data not found at {DATA} (shared/data)"),
             )
         ]
-    known = _known_failing()
-    out = []
-    for key in all_keys():
-        for v in VARIANTS:
-            ident = key_id(key, v)
-            marks = [pytest.mark.xfail(strict=False, reason=REASON)] if ident in known else []
-            out.append(pytest.param(key, v, id=ident, marks=marks))
-    return out
+    return [pytest.param(key, v, id=key_id(key, v)) for key in all_keys() for v in VARIANTS]
 
 
 @pytest.mark.parametrize(("key", "variant"), _params())
@@ -316,15 +297,12 @@ def check_reproducer(name: str, what: str, method: str) -> tuple[str, str] | Non
 
 
 def _reproducer_params(what: str) -> list:
-    known = _known_failing()
     out = []
     for name, (_, _, area) in REPRODUCERS.items():
         if what == "area" and not area:
             continue
         for m in VARIANTS[:2]:
-            ident = f"{name}-{what}-{m}"
-            marks = [pytest.mark.xfail(strict=False, reason=REASON)] if ident in known else []
-            out.append(pytest.param(name, m, id=ident, marks=marks))
+            out.append(pytest.param(name, m, id=f"{name}-{what}-{m}"))
     return out
 
 
@@ -377,7 +355,7 @@ def test_peer_reads_cgal_exactly():
 
 
 # --------------------------------------------------------------------------------------
-# as a script: the tally of today's mismatches, and the xfail list
+# as a script: the tally of mismatches
 
 
 def _survey() -> tuple[list, Counter]:
@@ -408,13 +386,6 @@ def main(argv: list[str]) -> int:
     for ident, kind, what in failing:
         if "-v" in argv:
             print(f"  {ident}: {kind}: {what}")
-    if "--write-xfail" in argv:
-        XFAIL_FILE.write_text(
-            "# Cross-check comparisons that fail today (tests/test_cgal_crosscheck.py marks\n"
-            "# them xfail(strict=False)). Regenerate: python -m tests.test_cgal_crosscheck "
-            "--write-xfail\n" + "".join(f"{i}\n" for i, _, _ in failing)
-        )
-        print(f"wrote {len(failing)} ids to {XFAIL_FILE}")
     return 0
 
 
