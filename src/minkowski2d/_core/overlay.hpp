@@ -403,7 +403,19 @@ class Overlay {
       return;
     }
     trace(out);
+    if (out.status == OK) finish_rounded(out);
   }
+  // as run, without the check after rounding (the check's own re-run uses it)
+  void run_raw(const std::vector<EdgeIn>& in, int rule, Rings& out) {
+    arrange(in, rule);
+    if (over_) {
+      out.clear();
+      out.status = RESOURCE;
+      return;
+    }
+    trace(out);
+  }
+  void finish_rounded(Rings& out);
 
  private:
   Geo& g_;
@@ -971,6 +983,164 @@ class Overlay {
 };
 
 // ------------------------------------------------------------------------------------
+// the output contract after rounding
+
+// Drops repeated vertices (neighbours rounded to the same double pair) from every ring of
+// `r`, and rings left with fewer than three. A polygon whose exterior vanished loses its
+// holes too. A vertex that rounding puts exactly on the line through its neighbours is
+// kept: the output is the rounded exact vertices, no more and no fewer (an exactly
+// collinear *exact* vertex never reaches it).
+inline void clean_rounded(Rings& r) {
+  Rings out;
+  out.status = r.status;
+  std::vector<double> x, y;
+  for (std::size_t p = 0; p + 1 < r.poly_off.size(); ++p) {
+    bool ext_kept = false;
+    for (i64 k = r.poly_off[p]; k < r.poly_off[p + 1]; ++k) {
+      x.clear();
+      y.clear();
+      const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1], m = r1 - r0;
+      for (i64 i = r0; i < r1; ++i) {
+        i64 j = i + 1 < r1 ? i + 1 : r0;
+        if (m > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) continue;
+        x.push_back(r.xy[2 * i]);
+        y.push_back(r.xy[2 * i + 1]);
+      }
+      if (x.size() < 3) continue;
+      // start again at the smallest vertex (x, then y)
+      std::size_t s0 = 0;
+      for (std::size_t i = 1; i < x.size(); ++i)
+        if (x[i] < x[s0] || (x[i] == x[s0] && y[i] < y[s0])) s0 = i;
+      std::rotate(x.begin(), x.begin() + s0, x.end());
+      std::rotate(y.begin(), y.begin() + s0, y.end());
+      bool is_ext = k == r.poly_off[p];
+      if (is_ext)
+        ext_kept = true;
+      else if (!ext_kept)
+        continue;
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        out.xy.push_back(x[i]);
+        out.xy.push_back(y[i]);
+      }
+      out.ring_off.push_back((i64)out.xy.size() / 2);
+    }
+    if (ext_kept) out.poly_off.push_back((i64)out.ring_off.size() - 1);
+  }
+  r = std::move(out);
+}
+
+// True when the rounded rings are a valid polygon set (exact signs on the doubles): no
+// two edges cross or overlap; a ring meets itself only where consecutive edges share
+// their vertex; two rings may touch at points -- a vertex of one on the other, or a
+// common vertex -- without crossing there. That is OGC validity up to the connectedness
+// of interiors, which rounding cannot break without one of these events.
+inline bool valid_rounded(const Rings& r) {
+  const i64 nr = (i64)r.ring_off.size() - 1;
+  const i64 n = (i64)r.xy.size() / 2;
+  std::vector<i64> ring_of;
+  ring_of.reserve(n);
+  for (i64 k = 0; k < nr; ++k)
+    for (i64 i = r.ring_off[k]; i < r.ring_off[k + 1]; ++i) ring_of.push_back(k);
+  auto nxt = [&](i64 i) {
+    return i + 1 < r.ring_off[ring_of[i] + 1] ? i + 1 : r.ring_off[ring_of[i]];
+  };
+  auto prv = [&](i64 i) { return i > r.ring_off[ring_of[i]] ? i - 1 : r.ring_off[ring_of[i] + 1] - 1; };
+  auto X = [&](i64 i) { return r.xy[2 * i]; };
+  auto Y = [&](i64 i) { return r.xy[2 * i + 1]; };
+  auto same = [&](i64 a, i64 b) { return X(a) == X(b) && Y(a) == Y(b); };
+  auto orient = [&](i64 a, i64 b, i64 c) {
+    return cross_sign(X(a), Y(a), X(b), Y(b), X(a), Y(a), X(c), Y(c));
+  };
+  // directions v -> a in angle order
+  auto angle_less = [&](i64 v, i64 a, i64 b) {
+    auto up = [&](i64 w) {
+      return Y(w) > Y(v) || (Y(w) == Y(v) && X(w) > X(v));
+    };
+    bool ua = up(a), ub = up(b);
+    if (ua != ub) return ua;
+    return orient(v, a, b) > 0;
+  };
+  // is direction v -> q strictly inside the counter-clockwise arc from v -> a to v -> b?
+  auto in_arc = [&](i64 v, i64 a, i64 b, i64 q) {
+    if (angle_less(v, a, b)) return angle_less(v, a, q) && angle_less(v, q, b);
+    return angle_less(v, a, q) || angle_less(v, q, b);
+  };
+  // rings i and j cross at their common vertex when j's two edges are separated by i's
+  auto cross_at = [&](i64 i, i64 j) {
+    bool in1 = in_arc(i, prv(i), nxt(i), prv(j)), in2 = in_arc(i, prv(i), nxt(i), nxt(j));
+    return in1 != in2;
+  };
+  std::vector<double> x0(n), x1(n), y0(n), y1(n);
+  for (i64 i = 0; i < n; ++i) {
+    i64 j = nxt(i);
+    x0[i] = std::min(X(i), X(j));
+    x1[i] = std::max(X(i), X(j));
+    y0[i] = std::min(Y(i), Y(j));
+    y1[i] = std::max(Y(i), Y(j));
+  }
+  bool ok = true;
+  box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 e, i64 f) {
+    if (!ok) return;
+    const i64 a = e, b = nxt(e), c = f, d = nxt(f);
+    const bool one_ring = ring_of[e] == ring_of[f];
+    int o1 = orient(a, b, c), o2 = orient(a, b, d);
+    if (o1 * o2 > 0) return;
+    int o3 = orient(c, d, a), o4 = orient(c, d, b);
+    if (o3 * o4 > 0) return;
+    if (o1 == 0 && o2 == 0) {
+      // collinear: they may only share an end point, as consecutive edges of one ring
+      // or edges of two rings
+      auto key = [&](i64 i) { return X(a) != X(b) ? X(i) : Y(i); };
+      double lo1 = std::min(key(a), key(b)), hi1 = std::max(key(a), key(b));
+      double lo2 = std::min(key(c), key(d)), hi2 = std::max(key(c), key(d));
+      if (hi1 < lo2 || hi2 < lo1) return;
+      if (hi1 == lo2 || hi2 == lo1) {
+        bool consecutive = one_ring && (b == c || d == a);
+        if (consecutive || !one_ring) return;
+      }
+      ok = false;
+      return;
+    }
+    if (o1 && o2 && o3 && o4) {  // a proper crossing
+      ok = false;
+      return;
+    }
+    // one common point
+    if (one_ring && (b == c || d == a)) return;  // consecutive edges at their vertex
+    if (one_ring) {
+      ok = false;  // a ring touching itself
+      return;
+    }
+    // two rings touch: a common vertex, or a vertex of one inside an edge of the other
+    i64 v = -1, w = -1;  // a vertex of each at the point, if any
+    for (i64 p : {a, b})
+      for (i64 q : {c, d})
+        if (same(p, q)) v = p, w = q;
+    if (v >= 0) {
+      if (cross_at(v, w)) ok = false;
+      return;
+    }
+    // a vertex u of one ring inside edge (s, t) of the other: its neighbours must not lie
+    // strictly on both sides of that edge
+    i64 u, s0, t0;
+    if (o1 == 0) u = c, s0 = a, t0 = b;
+    else if (o2 == 0) u = d, s0 = a, t0 = b;
+    else if (o3 == 0) u = a, s0 = c, t0 = d;
+    else u = b, s0 = c, t0 = d;
+    if (orient(s0, t0, prv(u)) * orient(s0, t0, nxt(u)) < 0) ok = false;
+  });
+  return ok;
+}
+
+// The remedy when rounding alone broke validity (exact features closer than an ulp):
+// the rounded rings, now plain doubles, are overlaid again (union of their winding
+// numbers: exteriors +1 inside, holes -1), which nodes the new crossings exactly and
+// rounds them in turn; repeated until valid (Halperin and Packer's iterated snap
+// rounding plays this role on an integer grid). The result is the exact regularized set
+// of the rounded polygon: every vertex within an ulp or two of the exact result.
+inline void rerun_rounded(Rings& r);
+
+// ------------------------------------------------------------------------------------
 // the cascaded union
 
 // Union (layer 0, w >= 1) of parts given as edge lists: groups of up to `leaf` parts are
@@ -1044,6 +1214,8 @@ class Cascade {
   }
 };
 
+inline void finish_rounded_impl(Rings& r, int depth);
+
 // ------------------------------------------------------------------------------------
 // helpers to feed an overlay
 
@@ -1059,6 +1231,36 @@ inline void add_ring(Geo& g, i64 first, i64 n, int w, int layer, std::vector<Edg
     out.push_back(EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, layer});
   }
 }
+
+inline void rerun_rounded(Rings& r) {
+  Geo g;
+  std::vector<EdgeIn> in;
+  for (std::size_t k = 0; k + 1 < r.ring_off.size(); ++k) {
+    i64 first = (i64)g.pts.size(), m = r.ring_off[k + 1] - r.ring_off[k];
+    for (i64 i = r.ring_off[k]; i < r.ring_off[k + 1]; ++i)
+      g.point(dd(r.xy[2 * i]), dd(r.xy[2 * i + 1]));
+    add_ring(g, first, m, 1, 0, in);
+  }
+  Overlay o(g);
+  Rings out;
+  o.run_raw(in, UNION, out);
+  r = std::move(out);
+}
+
+// Cleans the rounded rings and checks them; re-nodes them (a few times at most) when
+// rounding made them invalid.
+inline void finish_rounded_impl(Rings& r, int depth) {
+  clean_rounded(r);
+  if (valid_rounded(r)) return;
+  if (depth >= 4) {
+    r.status = INTERNAL;
+    return;
+  }
+  rerun_rounded(r);
+  if (r.status == OK) finish_rounded_impl(r, depth + 1);
+}
+
+inline void Overlay::finish_rounded(Rings& out) { finish_rounded_impl(out, 0); }
 
 }  // namespace ov
 }  // namespace mk
