@@ -46,6 +46,7 @@ import numpy as np
 from . import _options
 from ._coerce import as_array
 from ._geos import boundary, checked_polygonal
+from ._overlay import geometries
 from .batch import Ragged
 from .errors import (
     EmptyGeometryError,
@@ -335,22 +336,10 @@ def _union_members(geoms: list, name: str) -> Any:
     vertices where members cross are rounded to the nearest double."""
     import shapely
 
-    from ._core import _ext
+    from ._overlay import overlay
 
-    g = shapely.multipolygons(shapely.get_parts(geoms))
-    _, c, (ro, po, _) = shapely.to_ragged_array([g])
-    n = len(ro) - 1
-    xy, ro2, po2, status, _ = _ext.overlay_rings(
-        np.ascontiguousarray(c, np.float64),
-        np.empty((0, 2)),
-        np.asarray(ro, np.int64),
-        np.ones(n, np.int64),
-        np.zeros(n, np.int64),
-        _ext.OVERLAY_UNION,
-    )
-    if status:
-        raise _status_error(int(status), name, name, "union")
-    return _geoms(xy, ro2, po2, np.array([0, len(po2) - 1], np.int64))[0]
+    rings = [shapely.get_coordinates(r)[:-1] for g in geoms for r in shapely.get_rings(g)]
+    return overlay(rings, argument=name)
 
 
 def _has_area(ring: np.ndarray) -> bool:
@@ -606,36 +595,6 @@ def _table(preps: list[_Prepared], with_pieces: list[bool], decomposition: str) 
     )
 
 
-def _geoms(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, pair_off: np.ndarray) -> np.ndarray:
-    """shapely geometries of the core's ragged rings: a Polygon, a MultiPolygon, or an
-    empty Polygon per pair (vectorized)."""
-    import shapely
-
-    K = len(pair_off) - 1
-    out = np.empty(K, dtype=object)
-    if len(xy) == 0:
-        out[:] = [shapely.Polygon() for _ in range(K)]
-        return out
-    # close the rings: insert the first vertex after the last of each ring
-    lens = np.diff(ro)
-    idx = np.arange(len(xy) + len(lens)) - np.repeat(np.arange(len(lens)), lens + 1)
-    ends = np.cumsum(lens + 1) - 1
-    idx[ends] = ro[:-1]
-    coords = xy[idx]
-    rco = np.concatenate([[0], np.cumsum(lens + 1)]).astype(np.int64)
-    multi = shapely.from_ragged_array(
-        shapely.GeometryType.MULTIPOLYGON, coords, (rco, po, pair_off)
-    )
-    parts = shapely.get_num_geometries(multi)
-    one = parts == 1
-    out[one] = shapely.get_geometry(multi[one], 0)
-    many = parts > 1
-    out[many] = multi[many]
-    for k in np.flatnonzero(parts == 0):
-        out[k] = shapely.Polygon()
-    return out
-
-
 def _status_error(code: int, name_a: str, name_b: str, method: str) -> GeometryError:
     from ._dispatch import Status
 
@@ -715,14 +674,14 @@ def _sums(
 
     allk = np.arange(len(ia))
     xy, ro, po, pair_off, status, meth = call(allk, code)
-    out = _geoms(xy, ro, po, pair_off)
+    out = geometries(xy, ro, po, pair_off)
     redo = np.flatnonzero(status == Status.RANGE)
     if len(redo):
         # the default method found the convolution too large: the pieces, for these pairs
         for k in np.unique(np.concatenate([ia[redo], ib[redo]])):
             want[k] = True
         xy, ro, po, pair_off, st2, m2 = call(redo, _METHOD_CODE["decomposition"])
-        out[redo] = _geoms(xy, ro, po, pair_off)
+        out[redo] = geometries(xy, ro, po, pair_off)
         status[redo] = st2
         meth[redo] = m2
     if used is not None:
@@ -1309,4 +1268,4 @@ def _erode_general(A: _Operand, B: _Operand) -> Any:
     )
     if status[0] != 0:
         raise _status_error(int(status[0]), A.name, B.name, "convolution")
-    return _geoms(xy, ro, po, pair_off)[0]
+    return geometries(xy, ro, po, pair_off)[0]

@@ -899,12 +899,13 @@ class MotionPlanner:
 
     @property
     def free_space(self) -> Any:
-        """The closed free configuration space as a shapely geometry (display only; GEOS
-        regularizes, so zero-width passages are not shown). Without a workspace it is
-        clipped to a box around the C-obstacles."""
-        import shapely
+        """The closed free configuration space as a shapely geometry: the workspace box
+        (without a workspace, a box around the C-obstacles) minus the union of the
+        C-obstacle pieces, computed by the core's exact overlay (vertices correctly
+        rounded). The result is regularized: zero-width passages, which the planner
+        does use, are not shown."""
+        from ._overlay import overlay
 
-        polys = [p for p in self._piece_geoms() if p.geom_type == "Polygon"]
         if self.box is not None:
             b = [float(v) for v in self.box]
         else:
@@ -914,10 +915,15 @@ class MotionPlanner:
             lo, hi = allc.min(axis=0), allc.max(axis=0)
             m = max(float((hi - lo).max()) * 0.1, 1.0)
             b = [lo[0] - m, lo[1] - m, hi[0] + m, hi[1] + m]
-        region = shapely.box(*b)
-        if not polys:
-            return region
-        return region.difference(shapely.union_all(polys))
+        region = [(b[0], b[1]), (b[2], b[1]), (b[2], b[3]), (b[0], b[3])]
+        pieces = [np.asarray(p, dtype=np.float64) for p in self.pieces]
+        pieces = [p for p in pieces if len(p) >= 3]  # points and segments have no area
+        return overlay(
+            [region, *pieces],
+            layers=[0] + [1] * len(pieces),
+            rule="difference",
+            argument="free_space",
+        )
 
     @property
     def obstacles(self) -> list:
