@@ -499,12 +499,15 @@ class _Prepared:
                 c = self._unscaled(self.op.flat)
                 self._rings = (c, np.array([0, len(c)], np.int64), np.array([0, 1], np.int64))
             else:
-                g = self.op.geom
-                if g.geom_type == "Polygon":
-                    g = shapely.multipolygons([g])
-                _, c, (ro, po, _) = shapely.to_ragged_array([g])
-                c = self._unscaled(c)
-                self._rings = (c, np.asarray(ro, np.int64), np.asarray(po, np.int64))
+                # rings in order (each polygon: exterior, then holes), closing repeats
+                # kept (the core drops them); the core orients them itself
+                parts = shapely.get_parts(self.op.geom)
+                rings, which = shapely.get_rings(parts, return_index=True)
+                counts = shapely.get_num_coordinates(rings)
+                c = self._unscaled(shapely.get_coordinates(rings))
+                ro = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+                po = np.searchsorted(which, np.arange(len(parts) + 1)).astype(np.int64)
+                self._rings = (c, ro, po)
         return self._rings
 
     def _unscaled(self, c: Any) -> np.ndarray:
