@@ -119,6 +119,31 @@ nb::tuple general_sums(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> OO,
                         to_numpy(status, status.size(), 0), to_numpy(used, used.size(), 0));
 }
 
+// degenerate_pieces(pieces of A (coords, offsets), pieces of B) -> (polylines xy (L, 2),
+// polyline offsets, points (P, 2)): placements inside the regularized union of all
+// piece sums that lie in no piece sum's interior.
+nb::tuple degenerate_pieces(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64> OB) {
+  check_offsets(OA.data(), (i64)OA.shape(0) - 1, (i64)PA.shape(0), "degenerate: bad offsets");
+  check_offsets(OB.data(), (i64)OB.shape(0) - 1, (i64)PB.shape(0), "degenerate: bad offsets");
+  std::vector<double> lines, points;
+  std::vector<i64> off;
+  int code;
+  {
+    nb::gil_scoped_release nogil;
+    mk::ov::Geo g;
+    std::vector<std::vector<mk::ov::EdgeIn>> parts;
+    code = mk::ms::piece_sums(g, PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(),
+                              OB.data(), (i64)OB.shape(0) - 1, parts);
+    if (code == mk::OK) {
+      mk::ov::Overlay o(g);
+      o.degenerate(parts, lines, off, points);
+    }
+  }
+  if (code != mk::OK) throw nb::value_error("degenerate: a piece is not convex");
+  return nb::make_tuple(to_numpy(lines, lines.size() / 2, 2), to_numpy(off, off.size(), 0),
+                        to_numpy(points, points.size() / 2, 2));
+}
+
 }  // namespace
 
 void bind_general(nb::module_& m) {
@@ -127,6 +152,8 @@ void bind_general(nb::module_& m) {
         "pc_xy"_a.noconvert(), "pc_off"_a.noconvert(), "op_pc_off"_a.noconvert(),
         "ia"_a.noconvert(), "ib"_a.noconvert(), "method"_a, "max_segments"_a,
         "max_piece_pairs"_a, "max_crossings"_a, "threads"_a = 1);
+  m.def("degenerate_pieces", &degenerate_pieces, "pa"_a.noconvert(), "oa"_a.noconvert(),
+        "pb"_a.noconvert(), "ob"_a.noconvert());
   m.attr("METHOD_ERODE") = ERODE;
   m.attr("METHOD_AUTO") = (int)mk::ms::AUTO;
   m.attr("METHOD_PIECES") = (int)mk::ms::PIECES;

@@ -417,6 +417,176 @@ class Overlay {
   }
   void finish_rounded(Rings& out);
 
+  // Lower-dimensional parts of the union of rings (layer 0, weight 1, every ring convex
+  // and counter-clockwise, e.g. piece sums): points inside the regularized union that
+  // lie in no ring's interior. Pieces of such points (segments where rings meet from
+  // both sides, continued along the union's boundary where the same line goes on) come
+  // out as polylines, isolated points (an exact fit) as points; coordinates rounded.
+  // `rings` are the input edge lists, one per ring (for the point test).
+  void degenerate(const std::vector<std::vector<EdgeIn>>& rings, std::vector<double>& lines,
+                  std::vector<i64>& line_off, std::vector<double>& points) {
+    std::vector<EdgeIn> in;
+    for (auto& r : rings) in.insert(in.end(), r.begin(), r.end());
+    keep_zero_ = true;
+    arrange(in, UNION);
+    keep_zero_ = false;
+    line_off.assign(1, 0);
+    const i64 nv = (i64)av_.size(), np = (i64)pcs_.size();
+    // classify pieces: 1 degenerate (inside on both sides, covered by no interior),
+    // 2 on the boundary and covered by no interior (every boundary piece)
+    std::vector<char> kind(np, 0);
+    std::vector<char> at_boundary(nv, 0), at_degen(nv, 0);
+    for (i64 e = 0; e < np; ++e) {
+      const Piece& p = pcs_[e];
+      bool ib = p.b0 >= 1, ia = p.b0 + p.c0 >= 1;
+      if (ib && ia && p.b0 - p.n0 == 0) {
+        kind[e] = 1;
+        at_degen[p.l] = at_degen[p.r] = 1;
+      } else if (ib != ia) {
+        kind[e] = 2;
+        at_boundary[p.l] = at_boundary[p.r] = 1;
+      }
+    }
+    // adjacency of kinds 1 and 2
+    std::vector<std::vector<i64>> inc(nv);
+    for (i64 e = 0; e < np; ++e)
+      if (kind[e]) {
+        inc[pcs_[e].l].push_back(e);
+        inc[pcs_[e].r].push_back(e);
+      }
+    auto other = [&](i64 e, i64 v) { return pcs_[e].l == v ? pcs_[e].r : pcs_[e].l; };
+    // the same line going on: parallel and the other way round the vertex
+    auto straight = [&](i64 e, i64 f) {
+      return g_.turn(pcs_[e].line, 1, pcs_[f].line, 1) == 0;
+    };
+    std::vector<char> used(np, 0);
+    auto emit_vertex = [&](std::vector<double>& out, i64 v) {
+      double x, y;
+      g_.rounded(av_[v], x, y);
+      out.push_back(x);
+      out.push_back(y);
+    };
+    for (i64 e0 = 0; e0 < np; ++e0) {
+      if (kind[e0] != 1 || used[e0]) continue;
+      // grow a chain both ways through degenerate pieces at vertices where exactly two
+      // degenerate pieces meet, then continue along collinear boundary pieces
+      std::vector<i64> chain{pcs_[e0].l, pcs_[e0].r};
+      used[e0] = 1;
+      for (int side = 0; side < 2; ++side) {
+        i64 last = e0;
+        while (true) {
+          i64 v = side == 0 ? chain.back() : chain.front();
+          i64 next = -1, cnt = 0;
+          for (i64 f : inc[v])
+            if (f != last && kind[f] == 1) {
+              ++cnt;
+              next = f;
+            }
+          if (cnt != 1 || used[next]) {
+            // the line may go on along the boundary
+            next = -1;
+            if (cnt == 0)
+              for (i64 f : inc[v])
+                if (kind[f] == 2 && !used[f] && straight(last, f) && other(f, v) != other(last, v))
+                  next = f;
+            if (next < 0) break;
+          }
+          used[next] = 1;
+          i64 w = other(next, v);
+          if (side == 0)
+            chain.push_back(w);
+          else
+            chain.insert(chain.begin(), w);
+          last = next;
+          if (kind[next] == 2) {
+            // keep going straight along the boundary only
+            while (true) {
+              i64 nn = -1;
+              for (i64 f : inc[w])
+                if (f != next && kind[f] == 2 && !used[f] && straight(next, f)) nn = f;
+              if (nn < 0) break;
+              used[nn] = 1;
+              w = other(nn, w);
+              if (side == 0)
+                chain.push_back(w);
+              else
+                chain.insert(chain.begin(), w);
+              next = nn;
+            }
+            break;
+          }
+        }
+      }
+      // drop the chain's straight-on inner vertices
+      std::vector<i64> keep{chain[0]};
+      for (std::size_t k = 1; k + 1 < chain.size(); ++k) {
+        // straight on when the two pieces' lines through the vertex are parallel
+        i64 pe = -1, ne = -1;
+        for (i64 f : inc[chain[k]]) {
+          i64 o = other(f, chain[k]);
+          if (o == chain[k - 1] && (kind[f])) pe = f;
+          if (o == chain[k + 1] && (kind[f])) ne = f;
+        }
+        if (pe >= 0 && ne >= 0 && straight(pe, ne)) continue;
+        keep.push_back(chain[k]);
+      }
+      keep.push_back(chain.back());
+      for (i64 v : keep) emit_vertex(lines, v);
+      line_off.push_back((i64)lines.size() / 2);
+    }
+    // isolated points: vertices away from the boundary and from degenerate pieces,
+    // inside the union, in no ring's interior
+    std::vector<double> bx0, bx1, by0, by1;
+    std::vector<char> inside_all(nv, 1), touched(nv, 0);
+    for (i64 e = 0; e < np; ++e) {
+      const Piece& p = pcs_[e];
+      bool ok = p.b0 >= 1 && p.b0 + p.c0 >= 1;
+      for (i64 v : {p.l, p.r}) {
+        touched[v] = 1;
+        if (!ok) inside_all[v] = 0;
+      }
+    }
+    for (i64 v = 0; v < nv; ++v) {
+      if (!touched[v] || !inside_all[v] || at_degen[v] || at_boundary[v]) continue;
+      if (covered(rings, av_[v])) continue;
+      emit_vertex(points, v);
+    }
+  }
+
+ private:
+  // Is global vertex v in the interior of one of the (convex, counter-clockwise) rings?
+  bool covered(const std::vector<std::vector<EdgeIn>>& rings, i64 v) const {
+    const Vert& V = g_.verts[v];
+    for (const auto& r : rings) {
+      // box test on the approximations first
+      bool in_box = true;
+      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+      for (const EdgeIn& e : r) {
+        const Vert& a = g_.verts[e.v0];
+        x0 = std::min(x0, a.x.v - a.x.e);
+        x1 = std::max(x1, a.x.v + a.x.e);
+        y0 = std::min(y0, a.y.v - a.y.e);
+        y1 = std::max(y1, a.y.v + a.y.e);
+      }
+      if (V.x.v + V.x.e < x0 || V.x.v - V.x.e > x1 || V.y.v + V.y.e < y0 || V.y.v - V.y.e > y1)
+        in_box = false;
+      if (!in_box) continue;
+      bool inside = true;
+      for (const EdgeIn& e : r) {
+        // the edge runs along its line from v0 to v1: the side against that direction
+        int s = g_.side(e.line, v) * g_.along(e.line, e.v1, e.v0);
+        if (s <= 0) {
+          inside = false;
+          break;
+        }
+      }
+      if (inside) return true;
+    }
+    return false;
+  }
+
+ public:
+
  private:
   Geo& g_;
 
@@ -437,10 +607,13 @@ class Overlay {
     int c0, c1;     // change of w0, w1 crossing upwards
     int b0, b1;     // winding numbers below
     i64 from, to;   // boundary direction (local ids)
+    int n0;         // layer-0 weight of the edges with their inside below (for
+                    // degenerate(): the rings covering the piece's own points)
   };
   std::vector<Piece> pcs_, bnd_;
   int rule_ = UNION;
   bool over_ = false;
+  bool keep_zero_ = false;
 
   i64 find(i64 a) {
     while (uf_[a] != a) {
@@ -672,12 +845,14 @@ class Overlay {
     for (std::size_t i = 0; i < raw.size();) {
       std::size_t j = i;
       Piece pc = raw[i];
-      pc.c0 = pc.c1 = 0;
+      pc.c0 = pc.c1 = pc.n0 = 0;
       for (; j < raw.size() && raw[j].l == raw[i].l && raw[j].r == raw[i].r; ++j) {
         pc.c0 += raw[j].c0;
         pc.c1 += raw[j].c1;
+        if (raw[j].c0 < 0) pc.n0 -= raw[j].c0;
       }
-      if (pc.c0 != 0 || pc.c1 != 0) pcs_.push_back(pc);
+      // keep_zero_: a piece where rings meet from both sides stays (degenerate())
+      if (pc.c0 != 0 || pc.c1 != 0 || (keep_zero_ && j > i + 1)) pcs_.push_back(pc);
       i = j;
     }
     n_edges = (i64)pcs_.size();
