@@ -156,7 +156,9 @@ def test_degenerate_placements_on_instances_are_feasible():
                     over = A.intersection(shapely.affinity.translate(B, m.x, m.y)).area
                     assert over <= 1e-12 * A.area
                     assert poly.covers(m) or poly.distance(m) < 1e-12 * A.length
-    assert found >= 3
+    # shapes0 2-3 and 3-2 (a dighe2 "slide" was a GEOS artefact: it runs along the exact
+    # boundary of the NFP)
+    assert found >= 2
 
 
 # --------------------------------------------------------------------------------------
@@ -342,11 +344,10 @@ def test_auto_switches_to_the_convolution_on_curved_parts(monkeypatch):
 
     d = instance("gardeyn0")
     A, B = d["parts"][3], mk.rotate_part(d["parts"][3], 180)  # 2 304 sums, 170 crossings
-    calls = []
-    orig = general._sum_convolution
-    monkeypatch.setattr(general, "_sum_convolution", lambda *a: calls.append(1) or orig(*a))
-    g = mk.minkowski_sum_general_many([A], B)[0]
-    assert calls == [1]
+    used: list = []
+    preps = [general._Prepared(A, "a"), general._Prepared(B, "b")]
+    g = general._sums(preps, np.array([0]), np.array([1]), [("a", "b")], None, used=used)[0]
+    assert used == ["convolution"]
     ref = mk.minkowski_sum_general(A, B, method="decomposition")
     assert same_set(g, ref)
 

@@ -1,7 +1,6 @@
 """Issue 19 reproducers that the exact overlay in the core (issue 16) fixes: class 3 (GEOS
 ``simplify`` never returns on 5e-324 coordinates) and the class-8 "valid 3e-200 triangle
-called self-intersecting by general sums". Marked strict xfail until that rewrite lands:
-an XPASS then says the marker can go.
+called self-intersecting by general sums".
 
 The hang runs in a child process under a CPU-time limit (RLIMIT_CPU): the limit counts the
 child's own work, not the wall clock, so a busy machine neither fails a fixed sum nor
@@ -18,7 +17,6 @@ import minkowski2d as mk
 
 L = [(0, 0), (3, 0), (3, 1), (1, 1), (1, 3), (0, 3)]
 T200 = [(0.0, 0.0), (3e-200, 0.0), (0.0, 3e-200)]
-OVERLAY = "needs the exact overlay (issue 16)"
 #: CPU seconds the child may spend on one 6-vertex sum (the fixed code needs
 #: milliseconds; importing the package is part of it)
 CPU_LIMIT = 3
@@ -44,20 +42,17 @@ print(g.wkt if hasattr(g, "wkt") else [x.wkt for x in g])
 """
 
 
-@pytest.mark.xfail(strict=True, reason=OVERLAY)
 def test_general_sum_of_5e_324_coordinates_returns():
     p = _run_limited(_SUB.replace("{call}", "mk.minkowski_sum_general(A, L)"))
     assert p.returncode == 0, f"killed after {CPU_LIMIT} CPU seconds (status {p.returncode})"
     assert p.stdout.startswith("POLYGON ((0 0")  # A is a point at this scale: A ⊕ L ≈ L
 
 
-@pytest.mark.xfail(strict=True, reason=OVERLAY)
 def test_general_sum_many_of_5e_324_coordinates_returns():
     p = _run_limited(_SUB.replace("{call}", "mk.minkowski_sum_general_many([A, L], L)"))
     assert p.returncode == 0, f"killed after {CPU_LIMIT} CPU seconds (status {p.returncode})"
 
 
-@pytest.mark.xfail(strict=True, reason=OVERLAY, raises=mk.errors.SelfIntersectionError)
 def test_valid_3e_200_triangle_is_not_self_intersecting():
     import shapely
 

@@ -69,6 +69,8 @@ class Status(enum.IntEnum):
     UNHANDLED = _ext.UNHANDLED
     SHAPE = _ext.SHAPE
     EMPTY = _ext.EMPTY
+    INTERNAL = _ext.INTERNAL
+    RESOURCE = _ext.RESOURCE
 
 
 class Operand(NamedTuple):

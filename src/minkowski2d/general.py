@@ -45,8 +45,9 @@ import numpy as np
 
 from . import _options
 from ._coerce import as_array
-from ._geos import area_parts, boundary, checked_polygonal
-from .batch import Ragged, minkowski_sum_many
+from ._geos import boundary, checked_polygonal
+from ._overlay import geometries
+from .batch import Ragged
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -298,8 +299,7 @@ def _build(raw: _Raw, k: int) -> _Operand:
                     hint="pass the point or segment as an operand of its own",
                 )
             geoms.append(op.geom)
-        with _boundary(name, "uniting the polygons of the collection"):
-            u = shapely.get_parts(shapely.union_all(geoms))
+        u = shapely.get_parts(_union_members(geoms, name))
         polys = u[shapely.get_type_id(u) == 3]
         if len(polys) == 0:
             raise ShapeError(f"{name}: the polygons have no area", argument=name)
@@ -331,6 +331,17 @@ def _build(raw: _Raw, k: int) -> _Operand:
     return _Operand(_check_geom(poly, name), None, name)
 
 
+def _union_members(geoms: list, name: str) -> Any:
+    """The union of validated polygons (exteriors CCW, holes CW), by the exact overlay;
+    vertices where members cross are rounded to the nearest double."""
+    import shapely
+
+    from ._overlay import overlay
+
+    rings = [shapely.get_coordinates(r)[:-1] for g in geoms for r in shapely.get_rings(g)]
+    return overlay(rings, argument=name)
+
+
 def _has_area(ring: np.ndarray) -> bool:
     """True when the finite points ``ring`` do not all lie on one line (exact signs)."""
     from ._core import _ext
@@ -358,14 +369,6 @@ def _check_geom(geom: Any, name: str) -> Any:
     return checked_polygonal(
         geom, name, hint="the boundary must not cross itself; holes must lie inside"
     )
-
-
-def _flat_geom(flat: np.ndarray) -> Any:
-    import shapely
-
-    if len(flat) == 1:
-        return shapely.Point(flat[0])
-    return shapely.LineString(flat)
 
 
 def _unscale(geom: Any, k: int, argument: str) -> Any:
@@ -396,22 +399,6 @@ def _unscale(geom: Any, k: int, argument: str) -> Any:
             hint="scale the input up; the result's coordinates must be float64 normals",
         )
     return out
-
-
-def _result(geom: Any) -> Any:
-    """Polygon or MultiPolygon, exterior CCW and holes CW; empty Polygon if nothing."""
-    import shapely
-
-    g = area_parts(geom)
-    if g.is_empty:
-        return g
-    # drop the collinear vertices the union leaves, start each ring at a canonical vertex
-    g = shapely.normalize(shapely.simplify(g, 0.0))
-    return shapely.orient_polygons(g)
-
-
-# --------------------------------------------------------------------------------------
-# decomposition
 
 
 def _pieces(op: _Operand, method: str = "hertel-mehlhorn") -> Ragged:
@@ -481,285 +468,233 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
     return Ragged(np.ldexp(np.asarray(R.coords, dtype=np.float64), -k), R.offsets)
 
 
-def _ragged_polygons(coords: np.ndarray, off: np.ndarray) -> np.ndarray:
-    """shapely Polygons of (closed-up) rings; every ring has three or more vertices."""
-    import shapely
-
-    n = np.diff(off)
-    P = len(n)
-    # insert the closing vertex after each ring
-    total = len(coords) + P
-    idx = np.arange(total) - np.repeat(np.arange(P), n + 1)
-    ends = np.cumsum(n + 1) - 1
-    idx[ends] = off[:-1]
-    ring_id = np.repeat(np.arange(P), n + 1)
-    return shapely.polygons(shapely.linearrings(coords[idx], indices=ring_id))
-
-
-def _union_rounds(sums: Ragged, first: int) -> Any:
-    """Union of many convex polygons, in rounds that drop what is already covered."""
-    import shapely
-
-    coords = np.asarray(sums.coords, dtype=np.float64)
-    off = sums.offsets
-    n = np.diff(off)
-    poly_sel = n >= 3
-    if not poly_sel.all():
-        # degenerate sums (only when both operands are flat): they have no area
-        keep = np.flatnonzero(poly_sel)
-        if len(keep) == 0:
-            return shapely.Polygon()
-        sums = Ragged.from_list([sums[k] for k in keep])
-        coords, off = np.asarray(sums.coords, dtype=np.float64), sums.offsets
-    g = _ragged_polygons(coords, off)
-    P = len(g)
-    if P <= 64:
-        return shapely.union_all(g)
-    area = shapely.area(g)
-    lo = coords.min(axis=0)
-    hi = coords.max(axis=0)
-    c = coords - (lo + hi) / 2
-    reach = np.maximum.reduceat((c * c).sum(axis=1), off[:-1])
-    k = min(max(first, 16), P)
-    head = np.argpartition(-area, k - 1)[:k] if k < P else np.arange(P)
-    U = shapely.union_all(g[head])
-    mask = np.ones(P, bool)
-    mask[head] = False
-    rest = np.flatnonzero(mask)
-    step = 2 * k
-    while len(rest) > 4 * k:
-        shapely.prepare(U)
-        rest = rest[~shapely.contains_properly(U, g[rest])]
-        if len(rest) <= 4 * k:
-            break
-        m = min(step, len(rest))
-        top = np.argpartition(-reach[rest], m - 1)[:m]
-        sel = np.zeros(len(rest), bool)
-        sel[top] = True
-        U = shapely.union_all(np.concatenate([[U], g[rest[sel]]]))
-        rest = rest[~sel]
-        step *= 2
-    if len(rest):
-        shapely.prepare(U)
-        rest = rest[~shapely.contains_properly(U, g[rest])]
-        U = shapely.union_all(np.concatenate([[U], g[rest]]))
-    return U
-
-
-def _all_pairs(RA: Ragged, RB: Ragged) -> Ragged:
-    """``RA[i] ⊕ RB[j]`` for every pair, in one batched call."""
-    na, nb = len(RA), len(RB)
-    la, lb = RA.lengths, RB.lengths
-    # As: piece i repeated nb times; Bs: all pieces of B, na times
-    ia = np.repeat(np.arange(na), nb)
-    ib = np.tile(np.arange(nb), na)
-    a_len = la[ia]
-    b_len = lb[ib]
-    a_off = np.concatenate(([0], np.cumsum(a_len)))
-    b_off = np.concatenate(([0], np.cumsum(b_len)))
-    a_idx = np.arange(a_off[-1]) - np.repeat(a_off[:-1] - RA.offsets[ia], a_len)
-    b_idx = np.arange(b_off[-1]) - np.repeat(b_off[:-1] - RB.offsets[ib], b_len)
-    As = Ragged(RA.coords[a_idx], a_off)
-    Bs = Ragged(RB.coords[b_idx], b_off)
-    return minkowski_sum_many(As, Bs)
-
-
-def _sum_decomposition(A: _Operand, B: _Operand, decomposition: str, switch: bool) -> Any:
-    """The sum by convex pieces; None when the pieces product exceeds MAX_PIECE_PAIRS
-    and ``switch`` lets the caller use the convolution instead."""
-    import shapely
-
-    from .convex import minkowski_sum
-
-    ra, rb = A.convex_ring, B.convex_ring
-    if ra is not None and rb is not None:
-        s = np.asarray(minkowski_sum(ra, rb), dtype=np.float64)
-        if len(s) < 3:
-            raise ShapeError("both operands are points or segments: the sum has no area")
-        return shapely.Polygon(s)
-    RA = _pieces(A, decomposition)
-    RB = _pieces(B, decomposition)
-    pairs = len(RA) * len(RB)
-    if pairs > MAX_PIECE_PAIRS:
-        if switch:
-            return None
-        raise ResourceLimitError(
-            f"{A.name}, {B.name}: {len(RA)} x {len(RB)} convex pieces give {pairs} piece "
-            f"sums, above the limit MAX_PIECE_PAIRS = {MAX_PIECE_PAIRS}",
-            argument=f"{A.name}, {B.name}",
-            hint="leave method unset (it switches to the convolution), or simplify the polygons",
-        )
-    sums = _all_pairs(RA, RB)
-    return _union_rounds(sums, len(RA) + len(RB))
-
-
 # --------------------------------------------------------------------------------------
-# reduced convolution
+# the compiled sums: one call for many pairs
 
 
-def _rings(op: _Operand) -> list[np.ndarray]:
-    """Boundary rings with the interior on their left (exteriors CCW, holes CW)."""
-    import shapely
+class _Prepared:
+    """One operand, read and validated once: the validated operand (``op``, at its own
+    scale ``2**k``, see :func:`_operands`), and lazily its rings and convex pieces in the
+    caller's own units (float64, input vertices bit for bit)."""
 
-    if op.flat is not None:
-        f = op.flat
-        return [f if len(f) == 1 else np.vstack([f, f[::-1][1:-1]]) if len(f) > 2 else f]
-    rings = shapely.get_rings(shapely.get_parts(op.geom))
-    out = []
-    for r in rings:
-        c = shapely.get_coordinates(r)[:-1]
-        out.append(c)
+    __slots__ = ("op", "k", "flat", "name", "_rings", "_pieces")
+
+    def __init__(self, obj: Any, name: str) -> None:
+        raw = _parse(obj, name)
+        e = raw.exponent()
+        self.k = SCALE_EXPONENT - e if e is not None else 0
+        self.op = _build(raw, self.k)
+        self.flat = self.op.flat is not None
+        self.name = name
+        self._rings: tuple | None = None
+        self._pieces: Ragged | None = None
+
+    def rings(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """(coordinates (N, 2), ring offsets, polygon offsets) in the caller's units; a
+        point or segment is one polygon of one ring of 1 or 2 vertices."""
+        if self._rings is None:
+            import shapely
+
+            if self.flat:
+                c = self._unscaled(self.op.flat)
+                self._rings = (c, np.array([0, len(c)], np.int64), np.array([0, 1], np.int64))
+            else:
+                # rings in order (each polygon: exterior, then holes), closing repeats
+                # kept (the core drops them); the core orients them itself
+                parts = shapely.get_parts(self.op.geom)
+                rings, which = shapely.get_rings(parts, return_index=True)
+                counts = shapely.get_num_coordinates(rings)
+                c = self._unscaled(shapely.get_coordinates(rings))
+                ro = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+                po = np.searchsorted(which, np.arange(len(parts) + 1)).astype(np.int64)
+                self._rings = (c, ro, po)
+        return self._rings
+
+    def _unscaled(self, c: Any) -> np.ndarray:
+        """Coordinates in the caller's units, which the core computes in: an operand
+        beyond the float64 range (Fractions or huge ints) is an error here."""
+        c = np.asarray(c, np.float64)
+        if self.k == 0:
+            return c
+        with np.errstate(over="ignore", under="ignore"):
+            u = np.ldexp(c, -self.k)
+        if not np.isfinite(u).all():
+            raise OverflowGeometryError(
+                f"{self.name}: a coordinate overflows float64 (beyond ±1.8e308)",
+                argument=self.name,
+                hint="scale the input down; coordinates must fit in float64",
+            )
+        if not (np.ldexp(u, self.k) == c).all():
+            raise OverflowGeometryError(
+                f"{self.name}: the polygon underflows float64 (coordinates below 2**-1022 "
+                "would be rounded to multiples of 2**-1074)",
+                argument=self.name,
+                hint="scale the input up; coordinates must be float64 normals",
+            )
+        return u
+
+    def pieces(self, decomposition: str = "hertel-mehlhorn") -> Ragged:
+        """The convex pieces in the caller's units (a point or segment: none needed)."""
+        if self._pieces is None:
+            if self.flat:
+                self._pieces = Ragged(np.empty((0, 2)), np.zeros(1, np.int64))
+            else:
+                with _boundary(self.name, "decomposing the polygon"):
+                    R = _pieces(self.op, decomposition)
+                self._pieces = Ragged(
+                    np.ldexp(np.asarray(R.coords, np.float64), -self.k), R.offsets
+                )
+        return self._pieces
+
+
+#: Work limits of one pair (each a ResourceLimitError when exceeded):
+#: ``MAX_PIECE_PAIRS`` convex piece sums (pieces of A times pieces of B) for the
+#: decomposition ...
+MAX_PIECE_PAIRS = 1 << 21
+#: ... ``MAX_CONVOLUTION_SEGMENTS`` segments of the convolution ...
+MAX_CONVOLUTION_SEGMENTS = 1 << 22
+#: ... and ``MAX_CROSSINGS`` crossings noded by the exact overlay, over all its runs
+#: (about 150 bytes each). The 2048-vertex stars of the benchmark need the decomposition;
+#: their convolution has 10**6 segments and far more crossings.
+MAX_CROSSINGS = 1 << 21
+
+_METHOD_CODE = {"auto": 0, None: 0, "decomposition": 1, "convolution": 2}
+
+
+def _table(preps: list[_Prepared], with_pieces: list[bool], decomposition: str) -> tuple:
+    """The operands (and the pieces of those flagged) as the core's ragged arrays."""
+    xs, ros, pos, kinds, pcs, pcoffs, opc = [], [], [], [], [], [], [0]
+    n = r = q = 0
+    op_off = [0]
+    for p, want in zip(preps, with_pieces, strict=True):
+        c, ro, po = p.rings()
+        xs.append(c)
+        ros.append(ro[1:] + n)
+        pos.append(po[1:] + r)
+        n += len(c)
+        r += len(ro) - 1
+        op_off.append(op_off[-1] + len(po) - 1)
+        kinds.append(0 if not p.flat else (1 if len(c) == 1 else 2))
+        if want and not p.flat:
+            pc = p.pieces(decomposition)
+            pcs.append(np.asarray(pc.coords, np.float64))
+            pcoffs.append(pc.offsets[1:] + q)
+            q += len(pc.coords)
+            opc.append(opc[-1] + len(pc))
+        else:
+            opc.append(opc[-1])
+    cat = lambda arrs, dt, shape: (  # noqa: E731
+        np.ascontiguousarray(np.concatenate(arrs), dtype=dt) if arrs else np.empty(shape, dt)
+    )
+    return (
+        cat(xs, np.float64, (0, 2)),
+        np.concatenate([[0], *ros]).astype(np.int64) if ros else np.zeros(1, np.int64),
+        np.concatenate([[0], *pos]).astype(np.int64) if pos else np.zeros(1, np.int64),
+        np.asarray(op_off, np.int64),
+        np.asarray(kinds, np.int8),
+        cat(pcs, np.float64, (0, 2)),
+        np.concatenate([[0], *pcoffs]).astype(np.int64) if pcoffs else np.zeros(1, np.int64),
+        np.asarray(opc, np.int64),
+    )
+
+
+def _status_error(code: int, name_a: str, name_b: str, method: str) -> GeometryError:
+    from ._dispatch import Status
+
+    both = f"{name_a}, {name_b}"
+    if code == Status.SHAPE:
+        return ShapeError(
+            f"{both}: both operands are points or segments: the sum has no area",
+            argument=both,
+        )
+    if code == Status.OVERFLOW:
+        return OverflowGeometryError(
+            f"{both}: the result overflows float64 (a coordinate beyond ±1.8e308)",
+            argument=both,
+            hint="scale the input down; the result's coordinates must fit in float64",
+        )
+    if code == Status.RESOURCE:
+        what = {
+            "decomposition": f"MAX_PIECE_PAIRS = {MAX_PIECE_PAIRS} piece sums or "
+            f"MAX_CROSSINGS = {MAX_CROSSINGS} crossings",
+            "convolution": f"MAX_CONVOLUTION_SEGMENTS = {MAX_CONVOLUTION_SEGMENTS} segments "
+            f"or MAX_CROSSINGS = {MAX_CROSSINGS} crossings",
+        }.get(
+            method,
+            "the limits of both methods (MAX_CONVOLUTION_SEGMENTS, MAX_PIECE_PAIRS, MAX_CROSSINGS)",
+        )
+        hint = {
+            "decomposition": "leave method unset (it switches to the convolution), or "
+            "simplify the polygons",
+            "convolution": "use method='decomposition' (or leave method unset), or simplify "
+            "the polygons",
+        }.get(method, "simplify the polygons (fewer reflex vertices)")
+        return ResourceLimitError(
+            f"{both}: the sum needs more work than {what}",
+            argument=both,
+            hint=hint + "; the limits are module constants of minkowski2d.general",
+        )
+    return GeometryError(
+        f"{both}: internal error {code} in the exact overlay (please report it)",
+        argument=both,
+    )
+
+
+def _sums(
+    preps: list[_Prepared],
+    ia: np.ndarray,
+    ib: np.ndarray,
+    names: list[tuple[str, str]],
+    method: str | None,
+    decomposition: str = "hertel-mehlhorn",
+    threads: int = 1,
+    used: list | None = None,
+) -> np.ndarray:
+    """``A ⊕ B`` of the operand pairs ``(preps[ia[k]], preps[ib[k]])`` in one compiled
+    call (two when the default method finds that a pair needs the convex pieces). With
+    ``used``, the method each pair was computed by is appended to it."""
+    from ._core import _ext
+    from ._dispatch import Status
+
+    code = _METHOD_CODE[method]
+    want = [False] * len(preps)
+    if method == "decomposition":
+        for k in np.unique(np.concatenate([ia, ib])):
+            want[k] = True
+
+    def call(sel: np.ndarray, code: int) -> tuple:
+        T = _table(preps, want, decomposition)
+        return _ext.general_sums(
+            *T,
+            np.ascontiguousarray(ia[sel], np.int64),
+            np.ascontiguousarray(ib[sel], np.int64),
+            code,
+            MAX_CONVOLUTION_SEGMENTS,
+            MAX_PIECE_PAIRS,
+            MAX_CROSSINGS,
+            threads,
+        )
+
+    allk = np.arange(len(ia))
+    xy, ro, po, pair_off, status, meth = call(allk, code)
+    out = geometries(xy, ro, po, pair_off)
+    redo = np.flatnonzero(status == Status.RANGE)
+    if len(redo):
+        # the default method found the convolution too large: the pieces, for these pairs
+        for k in np.unique(np.concatenate([ia[redo], ib[redo]])):
+            want[k] = True
+        xy, ro, po, pair_off, st2, m2 = call(redo, _METHOD_CODE["decomposition"])
+        out[redo] = geometries(xy, ro, po, pair_off)
+        status[redo] = st2
+        meth[redo] = m2
+    if used is not None:
+        names_of = {0: "flat", 1: "decomposition", 2: "convolution"}
+        used.extend(names_of[int(m)] for m in meth)
+    bad = np.flatnonzero(status != Status.OK)
+    if len(bad):
+        k = int(bad[0])
+        raise _status_error(int(status[k]), names[k][0], names[k][1], method or "auto")
     return out
-
-
-def _cross(u: np.ndarray, v: np.ndarray) -> np.ndarray:
-    return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
-
-
-def _rc_segments(P: np.ndarray, Q: np.ndarray) -> np.ndarray:
-    """Reduced-convolution segments ``e + v``: ``e`` an edge of ring P, ``v`` a convex
-    vertex of ring Q whose (closed) normal cone holds the normal of ``e``.
-
-    A segment with ``v`` any point of ``Q`` lies in the sum and has the sum just left of
-    it, so the tests are made inclusive (a superset is harmless, a missing segment not).
-    """
-    if len(P) < 2 or len(Q) < 1:
-        return np.empty((0, 2, 2))
-    e = np.roll(P, -1, 0) - P
-    P1 = np.roll(P, -1, 0)
-    if len(Q) == 1:
-        return np.stack([P + Q[0], P1 + Q[0]], 1)
-    f = np.roll(Q, -1, 0) - Q
-    fin = np.roll(f, 1, 0)
-    scale = np.abs(e).max() * np.abs(f).max() * CONE_SLACK
-    turn = _cross(fin, f)
-    k = np.flatnonzero(turn >= -scale)
-    c1 = _cross(fin[k][None, :], e[:, None]) >= -scale
-    c2 = _cross(e[:, None], f[k][None, :]) >= -scale
-    # a convex vertex's cone is less than a half-turn: both tests together select it
-    jj, kk = np.nonzero(c1 & c2)
-    # endpoints as vertex sums (not start + edge), so that segments meet exactly
-    return np.stack([P[jj] + Q[k[kk]], P1[jj] + Q[k[kk]]], 1)
-
-
-def _convolution_faces(segs: np.ndarray) -> tuple[Any, np.ndarray]:
-    """Polygonized faces of the segments' arrangement, and for each face whether one of
-    its boundary edges carries a segment with the face on its left."""
-    import shapely
-
-    L = np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1)
-    segs = segs[L > 0]
-    lines = shapely.linestrings(segs)
-    noded = shapely.get_parts(shapely.node(shapely.multilinestrings(lines)))
-    ec = shapely.get_coordinates(noded).reshape(-1, 2, 2)
-    faces = shapely.get_parts(shapely.polygonize(noded))
-    if len(faces) == 0:
-        return faces, np.zeros(0, bool)
-    # provenance: the segments each noded edge lies on, and their directions
-    scale = max(np.abs(segs).max(), 1.0)
-    tol = scale * PROVENANCE_TOLERANCE
-    mid = (ec[:, 0] + ec[:, 1]) / 2
-    tree = shapely.STRtree(lines)
-    ei, si = tree.query(shapely.points(mid), predicate="dwithin", distance=tol)
-    de = ec[ei, 1] - ec[ei, 0]
-    ds = segs[si, 1] - segs[si, 0]
-    norm = np.linalg.norm(de, axis=1) * np.linalg.norm(ds, axis=1)
-    par = np.abs(_cross(de, ds)) <= PROVENANCE_TOLERANCE * norm
-    dot = (de * ds).sum(axis=1)
-    fwd = np.zeros(len(ec), bool)
-    bwd = np.zeros(len(ec), bool)
-    fwd[ei[par & (dot > 0)]] = True
-    bwd[ei[par & (dot < 0)]] = True
-    # directed edges that carry a segment in their own direction
-    dkeys = np.concatenate([ec[fwd].reshape(-1, 4), ec[bwd][:, ::-1].reshape(-1, 4)]) + 0.0
-    faces = shapely.orient_polygons(faces)
-    rings, ridx = shapely.get_rings(faces, return_index=True)
-    rc, rci = shapely.get_coordinates(rings, return_index=True)
-    nxt = np.arange(1, len(rc) + 1)
-    valid = np.ones(len(rc), bool)
-    last = np.flatnonzero(np.diff(rci, append=-1) != 0)  # closing vertex of each ring
-    valid[last] = False
-    nxt[last] = last
-    fkeys = np.concatenate([rc, rc[np.minimum(nxt, len(rc) - 1)]], axis=1)[valid] + 0.0
-    fface = ridx[rci[valid]]
-    v = np.dtype((np.void, 32))
-    hit = np.isin(
-        np.ascontiguousarray(fkeys).view(v).ravel(), np.ascontiguousarray(dkeys).view(v).ravel()
-    )
-    inside = np.bincount(fface[hit], minlength=len(faces)) > 0
-    return faces, inside
-
-
-def _convolution_limit(A: _Operand, B: _Operand, what: str, count: int, limit: int, name: str):
-    return ResourceLimitError(
-        f"{A.name}, {B.name}: the convolution would need at least {count} {what}, above "
-        f"the limit {name} = {limit}",
-        argument=f"{A.name}, {B.name}",
-        hint="use method='decomposition' (or leave method unset), or simplify the polygons",
-    )
-
-
-def _count_crossings(segs: np.ndarray, limit: int) -> int:
-    """Pairs of distinct segments that meet, counted in chunks; stops above ``limit``.
-
-    A chunk of ``c`` segments yields at most ``c * len(segs)`` pairs, so ``c`` is chosen
-    to keep that near ``limit`` (the count itself never needs more memory than that)."""
-    import shapely
-
-    lines = shapely.linestrings(segs)
-    tree = shapely.STRtree(lines)
-    step = max(1, min(4096, limit // max(len(lines), 1)))
-    total = 0
-    for i in range(0, len(lines), step):
-        chunk = lines[i : i + step]
-        total += len(tree.query(chunk, predicate="intersects")[0]) - len(chunk)
-        if total // 2 > limit:
-            break
-    return total // 2
-
-
-def _sum_convolution(A: _Operand, B: _Operand) -> Any:
-    import shapely
-
-    ra, rb = _rings(A), _rings(B)
-    tests = 2 * sum(len(p) * len(q) for p in ra for q in rb)
-    if tests > MAX_CONVOLUTION_TESTS:
-        raise _convolution_limit(
-            A, B, "edge-vertex tests", tests, MAX_CONVOLUTION_TESTS, "MAX_CONVOLUTION_TESTS"
-        )
-    segs = [_rc_segments(p, q) for p in ra for q in rb] + [
-        _rc_segments(q, p) for p in ra for q in rb
-    ]
-    segs = np.concatenate(segs)
-    segs = segs[(segs[:, 1] != segs[:, 0]).any(axis=1)]
-    crossings = _count_crossings(segs, MAX_CONVOLUTION_CROSSINGS)
-    if crossings > MAX_CONVOLUTION_CROSSINGS:
-        raise _convolution_limit(
-            A,
-            B,
-            "segment crossings",
-            crossings,
-            MAX_CONVOLUTION_CROSSINGS,
-            "MAX_CONVOLUTION_CROSSINGS",
-        )
-    faces, inside = _convolution_faces(segs)
-    cand = np.flatnonzero(~inside)
-    if len(cand):
-        # hole filter: a candidate face is inside the sum when A meets x − B
-        ga = _op_geom(A)
-        nb = shapely.affinity.scale(_op_geom(B), -1.0, -1.0, origin=(0, 0))
-        shapely.prepare(ga)
-        x = shapely.get_coordinates(shapely.point_on_surface(faces[cand]))
-        for q, (px, py) in zip(cand, x, strict=True):
-            if ga.intersects(shapely.affinity.translate(nb, px, py)):
-                inside[q] = True
-    if not inside.any():
-        return shapely.Polygon()
-    return shapely.coverage_union_all(faces[inside])
-
-
-def _op_geom(op: _Operand) -> Any:
-    return op.geom if op.flat is None else _flat_geom(op.flat)
 
 
 def minkowski_sum_general(
@@ -829,69 +764,29 @@ def minkowski_sum_general(
     """
     method = _options.choice(method, "method", (None, *SUM_METHODS))
     decomposition = _options.choice(decomposition, "decomposition", DECOMPOSITIONS)
-    k, (A, B) = _operands((a, "a"), (b, "b"))
-    with _boundary("a, b", "computing the sum"):
-        r = _result(_sum(A, B, method, decomposition))
-    return _unscale(r, k, "a, b")
-
-
-def _sum(A: _Operand, B: _Operand, method: str | None, decomposition: str) -> Any:
-    """``A ⊕ B`` of validated (scaled) operands, not yet cleaned by :func:`_result`."""
-    if A.flat is not None and B.flat is not None:
+    pa, pb = _Prepared(a, "a"), _Prepared(b, "b")
+    if pa.flat and pb.flat:
         raise ShapeError(
             "both operands are points or segments: the sum has no area", argument="a, b"
         )
-    if method == "convolution":
-        return _sum_convolution(A, B)
-    r = _sum_decomposition(A, B, decomposition, switch=method is None)
-    if r is not None:
-        return r
-    try:
-        return _sum_convolution(A, B)
-    except ResourceLimitError as exc:
-        raise ResourceLimitError(
-            f"{A.name}, {B.name}: both methods exceed their bounds: the decomposition "
-            f"has more than MAX_PIECE_PAIRS = {MAX_PIECE_PAIRS} piece sums, and {exc}",
-            argument=f"{A.name}, {B.name}",
-            hint="simplify the polygons (fewer reflex vertices)",
-        ) from exc
+    ia, ib = np.array([0]), np.array([1])
+    return _sums([pa, pb], ia, ib, [("a", "b")], method, decomposition)[0]
+
+
+class _Wrapped(_Prepared):
+    """An operand already built (its scale is the caller's: k = 0)."""
+
+    def __init__(self, op: _Operand) -> None:
+        self.op = op
+        self.k = 0
+        self.flat = op.flat is not None
+        self.name = op.name
+        self._rings = None
+        self._pieces = None
 
 
 # --------------------------------------------------------------------------------------
 # many sums at once
-
-#: ``minkowski_sum_general_many``: a pair whose piece sums number at most this many is
-#: unioned together with other pairs of similar size in one vectorized GEOS call
-#: (``shapely.union_all(..., axis=1)``); larger ones go through the union in rounds.
-GROUP_UNION_MAX = 256
-#: Pairs are processed in chunks of at most this many piece sums (bounds the memory and
-#: paces the progress bar).
-CHUNK_SUMS = 1 << 16
-
-
-class _Prepared:
-    """One operand of a batch, validated and decomposed once: its exponent ``e`` (frexp
-    of the largest |coordinate|, None when all are zero), its convex pieces in the
-    caller's own units (float64, input vertices bit for bit), whether it is flat, and
-    the operand itself (built at its own scale) for the per-pair fallback."""
-
-    __slots__ = ("e", "pieces", "flat", "op", "k", "obj")
-
-    def __init__(self, obj: Any, name: str) -> None:
-        self.obj = obj
-        raw = _parse(obj, name)
-        self.e = raw.exponent()
-        self.k = SCALE_EXPONENT - self.e if self.e is not None else 0
-        self.op = _build(raw, self.k)
-        self.flat = self.op.flat is not None
-        ring = self.op.convex_ring
-        with _boundary(name, "decomposing the polygon"):
-            R = (
-                Ragged(ring, np.array([0, len(ring)], np.int64))
-                if ring is not None
-                else _pieces(self.op)
-            )
-        self.pieces = Ragged(np.ldexp(np.asarray(R.coords, np.float64), -self.k), R.offsets)
 
 
 def _many_operands(X: Any) -> tuple[list, bool]:
@@ -1008,109 +903,47 @@ def minkowski_sum_general_many(
     ga = (lambda q: la[q]) if many_a else (lambda q: la[0])
     gb = (lambda q: lb[q]) if many_b else (lambda q: lb[0])
 
-    # read every distinct operand once
     cache: dict[int, _Prepared] = {}
+    index: dict[int, int] = {}
+    preps: list[_Prepared] = []
 
-    def prep(obj: Any, name: str) -> _Prepared:
+    def prep(obj: Any, name: str) -> int:
         key = id(obj)
-        p = cache.get(key)
-        if p is None:
-            p = cache[key] = _Prepared(obj, name)
-        return p
+        if key not in index:
+            index[key] = len(preps)
+            preps.append(_Prepared(obj, name))
+        return index[key]
 
-    todo = []
+    todo, ia, ib, names = [], [], [], []
     for q in range(P):
         a, b = ga(q), gb(q)
         if a is None or b is None:
             continue
-        pa, pb = prep(a, na(q)), prep(b, nb(q))
-        if pa.flat and pb.flat:
+        i, j = prep(a, na(q)), prep(b, nb(q))
+        if preps[i].flat and preps[j].flat:
             raise ShapeError(
                 f"{na(q)}, {nb(q)}: both operands are points or segments: the sum has no area",
                 argument=f"{na(q)}, {nb(q)}",
             )
-        todo.append((q, pa, pb))
+        todo.append(q)
+        ia.append(i)
+        ib.append(j)
+        names.append((na(q), nb(q)))
+    del cache
     bar = _progress_bar(progress, len(todo))
+    m = None if method == "auto" else method
     try:
-        fallback = []
-        batch: list = []
-        sums_in_batch = 0
-        for item in todo:
-            q, pa, pb = item
-            npairs = len(pa.pieces) * len(pb.pieces)
-            if method == "convolution" or npairs > MAX_PIECE_PAIRS:
-                if method == "decomposition":
-                    _sum_decomposition(pa.op, pb.op, "hertel-mehlhorn", switch=False)
-                fallback.append(item)
-                continue
-            if method == "auto" and npairs > AUTO_MIN_SUMS and not (pa.flat or pb.flat):
-                conv = _convolution_if_cheaper(pa, pb, npairs, f"{na(q)}, {nb(q)}")
-                if conv is not None:
-                    out[q] = conv
-                    bar(1)
-                    continue
-            batch.append(item)
-            sums_in_batch += npairs
-            if sums_in_batch >= CHUNK_SUMS:
-                _many_decomposition(batch, out, na, nb, threads)
-                bar(len(batch))
-                batch, sums_in_batch = [], 0
-        if batch:
-            _many_decomposition(batch, out, na, nb, threads)
-            bar(len(batch))
-        for q, _pa, _pb in fallback:
-            m = "convolution" if method == "convolution" else None
-            out[q] = _single(ga(q), gb(q), na(q), nb(q), method=m)
-            bar(1)
+        step = max(1, -(-len(todo) // 64)) if progress else max(1, len(todo))
+        A_, B_ = np.asarray(ia, np.int64), np.asarray(ib, np.int64)
+        for s in range(0, len(todo), step):
+            sel = slice(s, s + step)
+            res = _sums(preps, A_[sel], B_[sel], names[sel], m, threads=threads)
+            for q, g in zip(todo[sel], res, strict=True):
+                out[q] = g
+            bar(len(res))
     finally:
         bar(None)
     return out
-
-
-#: ``method="auto"`` of :func:`minkowski_sum_general_many`: a pair with more than this
-#: many piece sums is checked for the convolution being cheaper. The cost model (speed
-#: only, both methods give the same set) counts, for the decomposition,
-#: ``AUTO_COST_SUM`` seconds per piece sum, and for the convolution ``AUTO_COST_FIXED``
-#: plus ``AUTO_COST_SEGMENT`` per reduced-convolution segment and per pair of segments
-#: that meet (counted with an STRtree, stopping as soon as the convolution cannot win).
-#: Calibrated on gardeyn0/1/3 samples and stars (a per-sum cost of 25 µs chose the
-#: convolution too rarely: gardeyn0 1.3 s, 100 µs: 0.56 s): curved parts have many
-#: convex pieces (a concave arc needs one per edge) but few crossings (an 81-vertex
-#: gardeyn0 part with itself: 2 304 sums, 168 segments, 170 crossings, 88 ms against
-#: 21 ms); stars have many crossings (32-stars: 1 089 sums, 27 808 crossings, 39 ms
-#: against 2.7 s), and they stay with the decomposition.
-AUTO_MIN_SUMS = 256
-AUTO_COST_SUM = 1e-4
-AUTO_COST_FIXED = 5e-3
-AUTO_COST_SEGMENT = 5e-5
-#: The convolution is taken when estimated at most this fraction of the decomposition.
-AUTO_MARGIN = 1.0
-
-
-def _convolution_if_cheaper(pa: _Prepared, pb: _Prepared, npairs: int, name: str) -> Any:
-    """The sum by the convolution when the cost model prefers it, else None."""
-    budget = AUTO_MARGIN * AUTO_COST_SUM * npairs - AUTO_COST_FIXED
-    if budget <= 0:
-        return None
-    k = SCALE_EXPONENT - max(pa.e, pb.e)
-    A = _Operand(_ldexp_geom(pa.op.geom, k - pa.k), None, pa.op.name)
-    B = _Operand(_ldexp_geom(pb.op.geom, k - pb.k), None, pb.op.name)
-    with _boundary(name, "estimating the cost of the convolution"):
-        ra, rb = _rings(A), _rings(B)
-        if 2 * sum(len(p) * len(q) for p in ra for q in rb) > MAX_CONVOLUTION_TESTS:
-            return None
-        segs = np.concatenate(
-            [_rc_segments(p, q) for p in ra for q in rb]
-            + [_rc_segments(q, p) for p in ra for q in rb]
-        )
-        segs = segs[(segs[:, 1] != segs[:, 0]).any(axis=1)]
-        room = int(budget / AUTO_COST_SEGMENT) - len(segs)
-        if room <= 0:
-            return None
-        if _count_crossings(segs, room) > room:
-            return None
-        r = _result(_sum_convolution(A, B))
-    return _unscale(r, k, name)
 
 
 def _single(a: Any, b: Any, name_a: str, name_b: str, method: str | None = None) -> Any:
@@ -1145,129 +978,6 @@ def _progress_bar(progress: Any, total: int):
         return lambda n: None
     t = tqdm(total=total, unit="pair", leave=False)
     return lambda n: t.close() if n is None else t.update(n)
-
-
-def _many_decomposition(batch: list, out: np.ndarray, na, nb, threads: int) -> None:
-    """Sums of the pairs ``(q, prepared a, prepared b)`` by pieces, into ``out[q]``."""
-    import shapely
-
-    from ._core import _ext
-
-    # one coordinate array holding every operand's pieces
-    ops: dict[int, tuple[int, _Prepared]] = {}
-    chunks = []
-    base = 0
-    pbase = 0
-    for _, pa, pb in batch:
-        for p in (pa, pb):
-            if id(p) not in ops:
-                ops[id(p)] = (pbase, base, p)
-                chunks.append(p.pieces)
-                base += len(p.pieces.coords)
-                pbase += len(p.pieces)
-    C = np.ascontiguousarray(np.concatenate([np.asarray(r.coords, np.float64) for r in chunks]))
-    lo = np.concatenate([r.offsets[:-1] + s for r, s in zip(chunks, _starts(chunks), strict=True)])
-    hi = np.concatenate([r.offsets[1:] + s for r, s in zip(chunks, _starts(chunks), strict=True)])
-    # piece index ranges of every pair; pair q has na_q * nb_q sums
-    a0 = np.array([ops[id(pa)][0] for _, pa, _ in batch], np.int64)
-    b0 = np.array([ops[id(pb)][0] for _, _, pb in batch], np.int64)
-    ca = np.array([len(pa.pieces) for _, pa, _ in batch], np.int64)
-    cb = np.array([len(pb.pieces) for _, _, pb in batch], np.int64)
-    cnt = ca * cb
-    pair_of = np.repeat(np.arange(len(batch)), cnt)
-    local = np.arange(cnt.sum()) - np.repeat(np.cumsum(cnt) - cnt, cnt)
-    ia = a0[pair_of] + local // cb[pair_of]
-    ib = b0[pair_of] + local % cb[pair_of]
-    coords, off, code, *_ = _ext.sum_batch_f(C, lo[ia], hi[ia], C, lo[ib], hi[ib], threads)
-    if code:
-        # a range or overflow problem: the one-pair path computes it or raises
-        for q, pa, pb in batch:
-            out[q] = _single(pa.obj, pb.obj, na(q), nb(q))
-        return
-    # each pair's common scale, as in minkowski_sum_general
-    ks = np.array(
-        [SCALE_EXPONENT - max(e for e in (pa.e, pb.e) if e is not None) for _, pa, pb in batch],
-        np.int64,
-    )
-    nv = np.diff(off)
-    kv = np.repeat(ks[pair_of], nv)
-    with np.errstate(over="ignore", under="ignore"):
-        scaled = np.ldexp(coords, kv[:, None])
-    names = [f"{na(q)}, {nb(q)}" for q, _, _ in batch]
-    with _boundary(names[0] if len(batch) == 1 else "As, Bs", "uniting the piece sums"):
-        polys = _ragged_polygons(scaled, off)
-        first = np.cumsum(cnt) - cnt
-        res = np.empty(len(batch), dtype=object)
-        single = cnt == 1
-        res[single] = polys[first[single]]
-        # pairs of similar size together: one vectorized union per size class
-        mid = np.flatnonzero((cnt > 1) & (cnt <= GROUP_UNION_MAX))
-        if len(mid):
-            width = 1 << np.ceil(np.log2(cnt[mid])).astype(np.int64)
-            for w in np.unique(width):
-                sel = mid[width == w]
-                grid = np.full((len(sel), int(w)), None, dtype=object)
-                rows = np.repeat(np.arange(len(sel)), cnt[sel])
-                cols = np.arange(cnt[sel].sum()) - np.repeat(
-                    np.cumsum(cnt[sel]) - cnt[sel], cnt[sel]
-                )
-                grid[rows, cols] = polys[np.repeat(first[sel], cnt[sel]) + cols]
-                res[sel] = shapely.union_all(grid, axis=1)
-        for t in np.flatnonzero(cnt > GROUP_UNION_MAX):
-            s0, c = int(first[t]), int(cnt[t])
-            res[t] = _union_rounds_polys(polys[s0 : s0 + c])
-        res = _result_many(res)
-    for k in np.unique(ks):
-        sel = np.flatnonzero(ks == k)
-        for t, g in zip(sel, _unscale_many(res[sel], int(k), [names[t] for t in sel]), strict=True):
-            out[batch[t][0]] = g
-
-
-def _union_rounds_polys(g: np.ndarray) -> Any:
-    """:func:`_union_rounds` of an array of convex shapely polygons."""
-    import shapely
-
-    coords, idx = shapely.get_coordinates(shapely.get_exterior_ring(g), return_index=True)
-    n = np.bincount(idx, minlength=len(g)) - 1  # without the closing vertex
-    keep = np.ones(len(coords), bool)
-    keep[np.cumsum(n + 1) - 1] = False
-    off = np.concatenate(([0], np.cumsum(n)))
-    return _union_rounds(Ragged(coords[keep], off), 2 * int(np.sqrt(len(g))) + 1)
-
-
-def _starts(chunks: list) -> np.ndarray:
-    n = np.array([len(r.coords) for r in chunks], np.int64)
-    return np.cumsum(n) - n
-
-
-def _result_many(geoms: np.ndarray) -> np.ndarray:
-    """:func:`_result` of many union results (vectorized where they are polygons)."""
-    import shapely
-
-    t = shapely.get_type_id(geoms)
-    ok = (t == 3) | (t == 6)
-    out = np.empty(len(geoms), dtype=object)
-    if ok.any():
-        g = shapely.normalize(shapely.simplify(geoms[ok], 0.0))
-        out[ok] = shapely.orient_polygons(g)
-    for i in np.flatnonzero(~ok):
-        out[i] = _result(geoms[i])
-    return out
-
-
-def _unscale_many(geoms: np.ndarray, k: int, names: list) -> list:
-    """:func:`_unscale` of many results sharing the exponent ``k``."""
-    import shapely
-
-    if k == 0:
-        return list(geoms)
-    with np.errstate(over="ignore", under="ignore"):
-        out = shapely.transform(geoms, lambda c: np.ldexp(c, -k))
-    c = shapely.get_coordinates(out)
-    nz = np.abs(c[c != 0])
-    if nz.size and (not np.isfinite(nz).all() or nz.min() < 2.0**-1022):
-        return [_unscale(g, k, nm) for g, nm in zip(geoms, names, strict=True)]
-    return list(out)
 
 
 # --------------------------------------------------------------------------------------
@@ -1533,36 +1243,32 @@ def _erode(A: _Operand, B: _Operand) -> Any:
 
         na = np.asarray(normalize(ra), dtype=np.float64)
         return _erode_convex(na, B.hull())
-    return _result(_erode_general(A, B))
+    return _erode_general(A, B)
 
 
 def _erode_general(A: _Operand, B: _Operand) -> Any:
-    """``A ⊖ B = G \\ (R ⊕ (−B))`` for any A and B (neither needs to hold the origin).
+    """``A ⊖ B = G \\ (R ⊕ (−B))`` for any A and B (neither needs to hold the origin), in
+    one compiled call: ``G`` is the box ``bbox(A) ⊖ bbox(B)`` (exact corners), which
+    holds the erosion because ``c + B ⊆ A`` puts ``c + bbox(B)`` inside ``bbox(A)``;
+    ``R = F \\ A`` with ``F`` a box around ``bbox(A)``. A point ``c`` of ``G`` is outside
+    the erosion iff some ``c + b`` (b in B) is outside A; that point lies in
+    ``G + B ⊆ bbox(A) ⊆ F``, hence in ``R``, so ``c ∈ R ⊕ (−B)``. The exact overlay
+    computes ``G`` minus the convolution of ``R`` and ``−B`` (holes of R that B cannot
+    fit into filled first, see minkowski.hpp)."""
+    from ._core import _ext
 
-    ``G`` is the box ``bbox(A) ⊖ bbox(B)`` grown by a margin ``d``: the erosion lies in
-    ``bbox(A) ⊖ bbox(B)``, because ``c + B ⊆ A`` puts ``c + bbox(B)`` inside ``bbox(A)``.
-    ``R = F \\ A`` with ``F`` the box ``bbox(A)`` grown by ``4 d`` (A's complement
-    within F). A point ``c`` of ``G`` is outside the erosion iff some ``c + b`` (b in B)
-    is outside A; that point lies in ``G + B ⊆ bbox(A) ± d ⊆ F``, hence in ``R``, so
-    ``c ∈ R ⊕ (−B)``. Conversely ``R ⊕ (−B)`` never meets the erosion. The margin only
-    absorbs the rounding of the box corners (the operands are scaled to |x| < 2**20).
-    """
-    import shapely
-
-    ga = A.geom
-    gb = _op_geom(B)
-    ax0, ay0, ax1, ay1 = shapely.bounds(ga).tolist()
-    bx0, by0, bx1, by1 = shapely.bounds(gb).tolist()
-    F_ = Fraction
-    if F_(bx1) - F_(bx0) > F_(ax1) - F_(ax0) or F_(by1) - F_(by0) > F_(ay1) - F_(ay0):
-        return shapely.Polygon()  # B is wider or taller than A: it fits nowhere
-    d = 1.0
-    G = shapely.box(ax0 - bx0 - d, ay0 - by0 - d, ax1 - bx1 + d, ay1 - by1 + d)
-    F = shapely.box(ax0 - 4 * d, ay0 - 4 * d, ax1 + 4 * d, ay1 + 4 * d)
-    R = _Operand(shapely.orient_polygons(shapely.difference(F, ga)), None, A.name)
-    if B.flat is not None:
-        nB = _Operand(None, -B.flat, B.name)
-    else:
-        nB = _Operand(shapely.orient_polygons(shapely.transform(gb, lambda c: -c)), None, B.name)
-    grown = _result(_sum(R, nB, None, "hertel-mehlhorn"))
-    return shapely.difference(G, grown)
+    preps = [_Wrapped(A), _Wrapped(B)]
+    T = _table(preps, [False, False], "hertel-mehlhorn")
+    xy, ro, po, pair_off, status, _ = _ext.general_sums(
+        *T,
+        np.array([0], np.int64),
+        np.array([1], np.int64),
+        _ext.METHOD_ERODE,
+        MAX_CONVOLUTION_SEGMENTS,
+        MAX_PIECE_PAIRS,
+        MAX_CROSSINGS,
+        1,
+    )
+    if status[0] != 0:
+        raise _status_error(int(status[0]), A.name, B.name, "convolution")
+    return geometries(xy, ro, po, pair_off)[0]

@@ -35,7 +35,6 @@ import numpy as np
 
 from . import _options
 from ._coerce import as_array
-from .batch import minkowski_sum_many
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -448,14 +447,14 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
     -----
     ``int(A) ⊕ int(b)`` is the union of the interiors of the convex piece sums
     ``P ⊕ Q`` (an overlap of two open sets contains a point off every diagonal). So a
-    placement ``t`` of the closed sum is feasible iff it lies in no piece sum's interior,
-    and such a ``t`` lies on a piece sum's edge. Each edge minus the open piece sums is
-    computed exactly: the open interval of each convex sum on the edge's line comes from
-    cross products that are exact integers in float64 for integer coordinates below
-    2**24 (otherwise they are computed in Fractions), and interval ends are compared as
-    rationals. Pieces lying wholly on the boundary of the regularized sum are already in
-    it and are dropped (by GEOS, on the pieces' float64 coordinates); a segment that
-    continues along that boundary is kept whole (every point of it is a valid placement).
+    placement ``t`` of the closed sum is feasible iff it lies in no piece sum's interior.
+    The core's exact overlay of all piece sums gives every piece of the arrangement its
+    winding numbers on both sides and the number of piece sums whose boundary runs
+    along it with their inside below: a piece with the regularized sum on both sides and
+    no piece interior on it is such a placement (a slide); so is a vertex with the sum
+    all around it that no piece sum's interior holds (an exact fit, decided by exact
+    sides). A slide that continues along the sum's boundary on the same line is kept
+    whole (every point of it is a valid placement). Vertices are correctly rounded.
 
     Examples
     --------
@@ -467,148 +466,26 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
     'LINESTRING (1 1, 1 2)'
     """
 
-    if nfp is None:
-        nfp = minkowski_sum_general_many([a], b)[0]
-    RA = convex_decomposition(a)
-    RB = convex_decomposition(b)
-    na, nb = len(RA), len(RB)
-    ia = np.repeat(np.arange(na), nb)
-    ib = np.tile(np.arange(nb), na)
-    S = minkowski_sum_many([RA[i] for i in ia], [RB[j] for j in ib])
-    return _leftover(S, nfp)
-
-
-def _leftover(S: Any, nfp: Any) -> Any:
-    """Points of the edges of the convex polygons ``S`` in no polygon's interior, that
-    are not on the boundary of ``nfp``."""
     import shapely
 
-    C = np.asarray(S.coords, dtype=np.float64)
-    off = S.offsets
-    m = len(S)
-    nv = np.diff(off)
-    # edges (p, q) and their polygon
-    nxt = np.arange(len(C)) + 1
-    nxt[off[1:] - 1] = off[:-1]
-    P0, P1 = C, C[nxt]
-    eo = np.repeat(np.arange(m), nv)
-    exact_float = bool(np.all(C == np.round(C)) and np.abs(C).max(initial=0) < 2.0**24)
-    # candidate (edge, polygon) pairs by bounding boxes
-    boxes = shapely.box(*np.minimum.reduceat(C, off[:-1]).T, *np.maximum.reduceat(C, off[:-1]).T)
-    segs = shapely.linestrings(np.stack([P0, P1], axis=1))
-    tree = shapely.STRtree(boxes)
-    e_i, s_i = tree.query(segs, predicate="intersects")
-    keep = eo[e_i] != s_i
-    e_i, s_i = e_i[keep], s_i[keep]
-    # expand every (edge, polygon) pair over the polygon's edges: half-planes left of them
-    cnt = nv[s_i]
-    rep = np.repeat(np.arange(len(e_i)), cnt)
-    h = np.repeat(off[:-1][s_i], cnt) + (
-        np.arange(cnt.sum()) - np.repeat(np.cumsum(cnt) - cnt, cnt)
+    from ._core import _ext
+
+    del nfp  # the core finds these placements from the piece sums alone
+    RA = convex_decomposition(a)
+    RB = convex_decomposition(b)
+    lines, off, points = _ext.degenerate_pieces(
+        np.ascontiguousarray(RA.coords, np.float64),
+        np.asarray(RA.offsets, np.int64),
+        np.ascontiguousarray(RB.coords, np.float64),
+        np.asarray(RB.offsets, np.int64),
     )
-    if exact_float:
-        num = lambda v: v  # noqa: E731
-    else:
-        Fr = np.vectorize(Fraction, otypes=[object])
-        num = Fr
-    s0, s1 = num(P0[h]), num(P1[h])
-    p, q = num(P0[e_i[rep]]), num(P1[e_i[rep]])
-    d = s1 - s0
-    c0 = d[:, 0] * (p[:, 1] - s0[:, 1]) - d[:, 1] * (p[:, 0] - s0[:, 0])
-    c1 = d[:, 0] * (q[:, 1] - p[:, 1]) - d[:, 1] * (q[:, 0] - p[:, 0])
-    # p + t (q - p) is strictly left of the half-plane's line iff c0 + t c1 > 0
-    starts = np.cumsum(cnt) - cnt
-    pos0 = np.asarray(c0 > 0, bool)
-    pos1 = np.asarray(c0 + c1 > 0, bool)
-    full = np.logical_and.reduceat(pos0 & pos1, starts) if len(starts) else np.zeros(0, bool)
-    covered = np.zeros(len(P0), bool)
-    covered[e_i[full]] = True
-    # the remaining edges: subtract the open intervals, exactly
-    groups: dict[int, list] = {}
-    for r in np.flatnonzero(~full):
-        sl = slice(starts[r], starts[r] + cnt[r])
-        iv = _open_interval(c0[sl], c1[sl])
-        if iv is not None:
-            groups.setdefault(int(e_i[r]), []).append(iv)
-    pieces = []
-    for e in np.flatnonzero(~covered):
-        rest = _subtract([(Fraction(0), Fraction(1))], groups.get(int(e), []))
-        p, q = P0[e], P1[e]
-        for t0, t1 in rest:
-            a = _point_at(p, q, t0)
-            if t0 == t1:
-                pieces.append(shapely.Point(a))
-            else:
-                pieces.append(shapely.LineString([a, _point_at(p, q, t1)]))
-    if not pieces:
+    out = [shapely.LineString(lines[off[k] : off[k + 1]]) for k in range(len(off) - 1)]
+    out += [shapely.Point(p) for p in points.tolist()]
+    if not out:
         return shapely.GeometryCollection()
-    pieces = np.array(pieces, dtype=object)
-    bd = shapely.boundary(nfp)
-    shapely.prepare(bd)
-    # drop what lies wholly on the boundary (already in the polygon); a slit that runs
-    # on along the boundary is kept whole (cutting it would round the cut point)
-    pieces = pieces[~shapely.covers(bd, pieces)]
-    if len(pieces) == 0:
-        return shapely.GeometryCollection()
-    u = shapely.union_all(pieces)
-    lines = [g for g in shapely.get_parts(u) if g.geom_type == "LineString"]
-    points = [g for g in shapely.get_parts(u) if g.geom_type == "Point"]
-    merged = shapely.line_merge(shapely.MultiLineString(lines)) if lines else None
-    out = list(shapely.get_parts(shapely.simplify(merged, 0.0))) if merged is not None else []
-    out += points
     if len(out) == 1:
         return out[0]
     return shapely.GeometryCollection(out)
-
-
-def _point_at(p: np.ndarray, q: np.ndarray, t: Fraction) -> tuple[float, float]:
-    """``p + t (q − p)`` rounded once (exact when it is representable)."""
-    if t == 0:
-        return (float(p[0]), float(p[1]))
-    if t == 1:
-        return (float(q[0]), float(q[1]))
-    x = Fraction(p[0]) + t * (Fraction(q[0]) - Fraction(p[0]))
-    y = Fraction(p[1]) + t * (Fraction(q[1]) - Fraction(p[1]))
-    return (float(x), float(y))
-
-
-def _open_interval(c0: np.ndarray, c1: np.ndarray) -> tuple[Fraction, Fraction] | None:
-    """The open interval of t with c0 + t c1 > 0 for all rows (None if empty)."""
-    lo, hi = None, None
-    for a, b in zip(c0.tolist(), c1.tolist(), strict=True):
-        if b == 0:
-            if a <= 0:
-                return None
-            continue
-        t = Fraction(-a) / Fraction(b) if not isinstance(a, Fraction) else -a / b
-        if b > 0:
-            lo = t if lo is None or t > lo else lo
-        else:
-            hi = t if hi is None or t < hi else hi
-    if lo is not None and hi is not None and lo >= hi:
-        return None
-    return (lo, hi)
-
-
-def _subtract(closed: list, opens: list) -> list:
-    """Closed intervals ``[a, b]`` minus open intervals ``(lo, hi)`` (None: unbounded)."""
-    out = closed
-    for lo, hi in opens:
-        nxt = []
-        for a, b in out:
-            if (hi is not None and hi <= a) or (lo is not None and lo >= b):
-                nxt.append((a, b))
-                continue
-            if lo is not None and lo >= a:
-                nxt.append((a, lo))
-            if hi is not None and hi <= b:
-                nxt.append((hi, b))
-        out = nxt
-    return out
-
-
-# --------------------------------------------------------------------------------------
-# inner-fit polygon
 
 
 def inner_fit_polygon(container: Any, part: Any) -> Any:

@@ -874,37 +874,21 @@ class MotionPlanner:
     def cspace_obstacles(self) -> list:
         """One shapely geometry per obstacle: its C-obstacle ``O ⊕ (−R)`` (the union of
         its pieces; display only: the planner never unions)."""
-        import shapely
-
-        polys = self._piece_geoms()
-        out = []
-        for g in range(self.n_obstacles):
-            sel = [p for p, gg in zip(polys, self.groups.tolist()) if gg == g]
-            out.append(shapely.union_all(sel) if sel else shapely.Polygon())
-        return out
-
-    def _piece_geoms(self) -> list:
-        import shapely
-
-        res = []
-        for p in self.pieces:
-            q = np.asarray(p, dtype=np.float64)
-            if len(q) >= 3:
-                res.append(shapely.Polygon(q))
-            elif len(q) == 2:
-                res.append(shapely.LineString(q))
-            else:
-                res.append(shapely.Point(q[0]))
-        return res
+        groups = self.groups.tolist()
+        return [
+            _union_shapes([p for p, gg in zip(self.pieces, groups) if gg == g])
+            for g in range(self.n_obstacles)
+        ]
 
     @property
     def free_space(self) -> Any:
-        """The closed free configuration space as a shapely geometry (display only; GEOS
-        regularizes, so zero-width passages are not shown). Without a workspace it is
-        clipped to a box around the C-obstacles."""
-        import shapely
+        """The closed free configuration space as a shapely geometry: the workspace box
+        (without a workspace, a box around the C-obstacles) minus the union of the
+        C-obstacle pieces, computed by the core's exact overlay (vertices correctly
+        rounded). The result is regularized: zero-width passages, which the planner
+        does use, are not shown."""
+        from ._overlay import overlay
 
-        polys = [p for p in self._piece_geoms() if p.geom_type == "Polygon"]
         if self.box is not None:
             b = [float(v) for v in self.box]
         else:
@@ -914,28 +898,20 @@ class MotionPlanner:
             lo, hi = allc.min(axis=0), allc.max(axis=0)
             m = max(float((hi - lo).max()) * 0.1, 1.0)
             b = [lo[0] - m, lo[1] - m, hi[0] + m, hi[1] + m]
-        region = shapely.box(*b)
-        if not polys:
-            return region
-        return region.difference(shapely.union_all(polys))
+        region = [(b[0], b[1]), (b[2], b[1]), (b[2], b[3]), (b[0], b[3])]
+        pieces = [np.asarray(p, dtype=np.float64) for p in self.pieces]
+        pieces = [p for p in pieces if len(p) >= 3]  # points and segments have no area
+        return overlay(
+            [region, *pieces],
+            layers=[0] + [1] * len(pieces),
+            rule="difference",
+            argument="free_space",
+        )
 
     @property
     def obstacles(self) -> list:
         """The obstacles as shapely geometries (for display)."""
-        import shapely
-
-        res = []
-        for pcs in self._obstacle_pieces:
-            geoms = []
-            for p in pcs:
-                q = p.astype(np.float64)
-                geoms.append(
-                    shapely.Polygon(q)
-                    if len(q) >= 3
-                    else (shapely.LineString(q) if len(q) == 2 else shapely.Point(q[0]))
-                )
-            res.append(shapely.union_all(geoms))
-        return res
+        return [_union_shapes(pcs) for pcs in self._obstacle_pieces]
 
     def _plot_(self, ax: Any, path: Path | None = None, **kwargs: Any) -> Any:
         return self.plot(ax, path=path)
@@ -1016,6 +992,23 @@ def _workspace_groups(wpieces: list, rpieces: list) -> list[int]:
             if d is None or e[0] * d[1] == e[1] * d[0]:
                 parent[find(i)] = find(j)
     return [find(i) for i in range(len(wpieces)) for _ in range(nr)]
+
+
+def _union_shapes(pieces: list) -> Any:
+    """Union of convex pieces (arrays of 1, 2 or more vertices) for display: the areas by
+    the core's exact overlay, points and segments beside them."""
+    import shapely
+
+    from ._overlay import overlay
+
+    arrs = [np.asarray(p, dtype=np.float64) for p in pieces]
+    area = overlay([a for a in arrs if len(a) >= 3])
+    low = [
+        shapely.LineString(a) if len(a) == 2 else shapely.Point(a[0]) for a in arrs if len(a) < 3
+    ]
+    if not low:
+        return area
+    return shapely.GeometryCollection([*shapely.get_parts(area), *low])
 
 
 def _ring_coords(workspace: Any) -> np.ndarray:

@@ -43,7 +43,7 @@ enum Status : int {
   SHAPE = 8,            // not an (n, 2) sequence of pairs
   EMPTY = 9,            // no vertices
   INTERNAL = 10,        // an internal consistency check failed (a bug: please report it)
-  LIMIT = 11,           // a stated bound on work was reached (ResourceLimitError)
+  RESOURCE = 11,        // the work would exceed a limit (crossings, segments, pieces)
 };
 
 constexpr double EPS = 1.1102230246251565e-16;                 // 2^-53

@@ -30,6 +30,7 @@
 #include "exact.hpp"
 #include "exactnum.hpp"
 #include "overlay.hpp"
+#include "union.hpp"
 
 namespace mk {
 namespace ms {
@@ -37,6 +38,9 @@ namespace ms {
 using ov::DD;
 using ov::EdgeIn;
 using ov::Geo;
+using ov::Cascade;
+using ov::Overlay;
+using ov::Rings;
 
 // A ring of an operand: vertex coordinates (x, y pairs), consecutive duplicates removed,
 // inside on the left (exteriors counter-clockwise, holes clockwise).
@@ -113,15 +117,12 @@ inline bool may_fit(const Box& q, const Box& h) {
   return width_cmp(q.x0, q.x1, h.x0, h.x1) < 0 && width_cmp(q.y0, q.y1, h.y0, h.y1) < 0;
 }
 
-// The rings of an operand for the convolution against the other operand's box: holes
-// the other cannot fit into are filled (dropped).
-inline std::vector<const Ring*> conv_rings(const std::vector<Polygon>& P, const Box& other) {
-  std::vector<const Ring*> out;
-  for (const Polygon& p : P) {
-    out.push_back(&p.ext);
-    for (const Ring& h : p.holes)
-      if (may_fit(other, ring_box(h))) out.push_back(&h);
-  }
+// The rings of polygon P for the convolution with a polygon whose box is `other`: the
+// holes it cannot fit into are filled (dropped).
+inline std::vector<const Ring*> conv_rings(const Polygon& p, const Box& other) {
+  std::vector<const Ring*> out{&p.ext};
+  for (const Ring& h : p.holes)
+    if (may_fit(other, ring_box(h))) out.push_back(&h);
   return out;
 }
 
@@ -196,14 +197,20 @@ inline void conv_pair(Geo& g, const Ring& R, const Ring& S, bool start_open,
   }
 }
 
-// The full convolution of two operands (after filling the holes that cannot matter).
+// The full convolution of two operands: of every polygon of A with every polygon of B,
+// after filling the holes of each that the other cannot fit into. Then the winding
+// number around x is the sum over the pairs of the number of components of
+// P_k ∩ (x − Q_l): at least 1 exactly where x is in A ⊕ B.
 inline void convolution(Geo& g, const std::vector<Polygon>& A, const std::vector<Polygon>& B,
                         std::vector<EdgeIn>& out) {
-  std::vector<const Ring*> ra = conv_rings(A, operand_box(B)), rb = conv_rings(B, operand_box(A));
-  for (const Ring* r : ra)
-    for (const Ring* s : rb) {
-      conv_pair(g, *r, *s, true, out);   // edges of A at vertices of B
-      conv_pair(g, *s, *r, false, out);  // edges of B at vertices of A
+  for (const Polygon& p : A)
+    for (const Polygon& q : B) {
+      std::vector<const Ring*> ra = conv_rings(p, ring_box(q.ext)), rb = conv_rings(q, ring_box(p.ext));
+      for (const Ring* r : ra)
+        for (const Ring* s : rb) {
+          conv_pair(g, *r, *s, true, out);   // edges of A at vertices of B
+          conv_pair(g, *s, *r, false, out);  // edges of B at vertices of A
+        }
     }
 }
 
@@ -302,6 +309,272 @@ inline std::vector<Polygon> read_polygons(const double* xy, const i64* ro, const
     }
   }
   return out;
+}
+
+// ------------------------------------------------------------------------------------
+// the batch driver: many pairs of operands from one table
+
+// Operands in ragged arrays: coordinates (N, 2), ring offsets, polygon offsets, operand
+// offsets (into the polygons); kind 0 polygons, 1 a point, 2 a segment (one ring of 1 or
+// 2 vertices). Convex pieces (for the decomposition) likewise: coordinates, piece
+// offsets, operand offsets into the pieces (an empty range: none given).
+struct Table {
+  const double* xy;
+  const i64 *ring_off, *poly_off, *op_off;
+  const std::int8_t* kind;
+  const double* pc_xy;
+  const i64 *pc_off, *op_pc_off;
+  i64 n_ops;
+};
+
+enum Method : int { AUTO = 0, PIECES = 1, CONVOLUTION = 2 };
+
+struct Limits {
+  i64 conv_segments = (i64)1 << 24;  // convolution segments of one pair
+  i64 piece_pairs = (i64)1 << 21;    // piece sums of one pair
+  i64 crossings = (i64)1 << 22;      // crossings noded for one pair (all runs)
+};
+
+inline std::vector<Polygon> operand(const Table& T, i64 op) {
+  i64 p0 = T.op_off[op], p1 = T.op_off[op + 1];
+  return read_polygons(T.xy, T.ring_off, T.poly_off + p0, p1 - p0);
+}
+
+inline i64 vertex_count(const std::vector<Polygon>& P) {
+  i64 n = 0;
+  for (const Polygon& p : P) {
+    n += p.ext.n();
+    for (const Ring& h : p.holes) n += h.n();
+  }
+  return n;
+}
+
+// The number of convolution segments (stops counting above limit).
+inline i64 conv_count(const std::vector<Polygon>& A, const std::vector<Polygon>& B, i64 limit) {
+  i64 cnt = 0;
+  auto pair = [&](const Ring& R, const Ring& S, bool start_open) {
+    const i64 n = R.n(), m = S.n();
+    if (n < 2 || m < 1) return;
+    for (i64 j = 0; j < m && cnt <= limit; ++j) {
+      i64 jp = (j + m - 1) % m, jn = (j + 1) % m;
+      Dir u{S.x(jp), S.y(jp), S.x(j), S.y(j)}, v{S.x(j), S.y(j), S.x(jn), S.y(jn)};
+      if (cr(u, v) == 0) continue;
+      for (i64 i = 0; i < n; ++i) {
+        i64 in = (i + 1) % n;
+        Dir d{R.x(i), R.y(i), R.x(in), R.y(in)};
+        if (in_range(u, v, d, start_open)) ++cnt;
+      }
+    }
+  };
+  for (const Polygon& p : A)
+    for (const Polygon& q : B) {
+      std::vector<const Ring*> ra = conv_rings(p, ring_box(q.ext)), rb = conv_rings(q, ring_box(p.ext));
+      for (const Ring* r : ra)
+        for (const Ring* s : rb) {
+          pair(*r, *s, true);
+          pair(*s, *r, false);
+        }
+    }
+  return cnt;
+}
+
+// The method auto picks: the convolution when it has at most a few segments per input
+// vertex (every convex pair has exactly n + m; spiky shapes have up to n m / 4 and far
+// more crossings), else the pieces.
+constexpr i64 AUTO_SEGMENTS_PER_VERTEX = 6;
+
+// Sum of one pair into out (status in out.status): OK, RESOURCE (a limit), RANGE (auto
+// or pieces needed the convex pieces of an operand and none were given), SHAPE (both
+// operands are points or segments), OVERFLOW.
+inline void sum_pair(const Table& T, i64 a, i64 b, int method, const Limits& L, Rings& out,
+                     int* used = nullptr) {
+  out.clear();
+  Geo g;
+  const int ka = T.kind[a], kb = T.kind[b];
+  if (ka != 0 && kb != 0) {
+    out.status = SHAPE;
+    return;
+  }
+  std::vector<Polygon> A = operand(T, a), B = operand(T, b);
+  if (ka != 0 || kb != 0) {
+    // a point translates, a segment sweeps
+    const std::vector<Polygon>& P = ka == 0 ? A : B;
+    const Ring& f = (ka == 0 ? B : A)[0].ext;
+    Overlay o(g);
+    o.max_crossings = L.crossings;
+    if (f.n() == 1) {
+      std::vector<EdgeIn> in;
+      operand_edges(g, P, f.x(0), f.y(0), in);
+      o.run(in, ov::UNION, out);
+    } else {
+      std::vector<std::vector<EdgeIn>> parts;
+      segment_sum(g, P, f.x(0), f.y(0), f.x(1), f.y(1), parts);
+      Cascade c(g);
+      c.max_crossings = L.crossings;
+      c.unite(parts, out);
+    }
+    if (used) *used = 0;
+    return;
+  }
+  if (method == AUTO || method == CONVOLUTION) {
+    i64 nv = vertex_count(A) + vertex_count(B);
+    i64 cap = method == AUTO ? std::min(L.conv_segments, AUTO_SEGMENTS_PER_VERTEX * nv + 64)
+                             : L.conv_segments;
+    i64 cnt = conv_count(A, B, cap);
+    if (cnt <= cap) {
+      std::vector<EdgeIn> in;
+      in.reserve(cnt);
+      convolution(g, A, B, in);
+      Overlay o(g);
+      o.max_crossings = L.crossings;
+      o.run(in, ov::UNION, out);
+      if (used) *used = CONVOLUTION;
+      if (out.status != RESOURCE || method == CONVOLUTION) return;
+      g = Geo();  // auto: too many crossings, try the pieces
+    } else if (method == CONVOLUTION) {
+      out.status = RESOURCE;
+      return;
+    }
+  }
+  // the pieces
+  const i64 qa0 = T.op_pc_off[a], qa1 = T.op_pc_off[a + 1];
+  const i64 qb0 = T.op_pc_off[b], qb1 = T.op_pc_off[b + 1];
+  if (qa1 == qa0 || qb1 == qb0) {
+    out.clear();
+    out.status = RANGE;
+    return;
+  }
+  if ((qa1 - qa0) * (qb1 - qb0) > L.piece_pairs) {
+    out.clear();
+    out.status = RESOURCE;
+    return;
+  }
+  // piece offsets relative to the table's piece coordinates
+  std::vector<i64> oa(T.pc_off + qa0, T.pc_off + qa1 + 1), ob(T.pc_off + qb0, T.pc_off + qb1 + 1);
+  // --- union.hpp: the piece sums made on demand, the ones inside the union so far dropped
+  // before noding, the rest united (this thread's reused buffers)
+  un::with_workspace([&](un::Workspace& w) {
+    w.u.max_crossings = L.crossings;
+    return un::sum_pieces_union(w.u, T.pc_xy, oa.data(), qa1 - qa0, T.pc_xy, ob.data(),
+                                qb1 - qb0, out);
+  });
+  // ---
+  if (used) *used = PIECES;
+}
+
+// ------------------------------------------------------------------------------------
+// erosion
+
+// -P (a point reflection keeps every ring's orientation)
+inline std::vector<Polygon> negated(std::vector<Polygon> P) {
+  auto neg = [](Ring& r) {
+    for (double& v : r.xy) v = -v;
+  };
+  for (Polygon& p : P) {
+    neg(p.ext);
+    for (Ring& h : p.holes) neg(h);
+  }
+  return P;
+}
+
+// A ⊖ B = {c : c + B ⊆ A} (A polygons, B any operand) into out: G \ (R ⊕ (−B)) with G
+// the box bbox(A) ⊖ bbox(B) (exact corners) and R = F \ A for a box F around bbox(A):
+// c ∈ G misses the erosion iff some c + b (b ∈ B) lies outside A, and that point lies
+// in G + B ⊆ bbox(A) ⊆ F, so in R. R's rings are F, A's exteriors reversed (holes of R,
+// filled when B cannot fit in them: it changes nothing) and A's holes reversed. One
+// overlay: G on layer 0, the convolution (or the sweep of a segment, or the translate
+// by a point) on layer 1, rule w0 >= 1 and w1 <= 0.
+inline void erode_pair(const Table& T, i64 a, i64 b, const Limits& L, Rings& out) {
+  out.clear();
+  Geo g;
+  std::vector<Polygon> A = operand(T, a), B = operand(T, b);
+  const int kb = T.kind[b];
+  Box ba = operand_box(A), bb = operand_box(B);
+  if (width_cmp(bb.x0, bb.x1, ba.x0, ba.x1) > 0 || width_cmp(bb.y0, bb.y1, ba.y0, ba.y1) > 0)
+    return;  // B is wider or taller than A: it fits nowhere
+  // R = F \ A
+  double span = (ba.x1 - ba.x0) + (ba.y1 - ba.y0) + 1.0;
+  if (!(span - span == 0)) {
+    out.status = OVERFLOW;
+    return;
+  }
+  std::vector<Polygon> R(1);
+  {
+    double fx0 = ba.x0 - span, fx1 = ba.x1 + span, fy0 = ba.y0 - span, fy1 = ba.y1 + span;
+    if (!(fx0 - fx0 == 0 && fx1 - fx1 == 0 && fy0 - fy0 == 0 && fy1 - fy1 == 0)) {
+      out.status = OVERFLOW;
+      return;
+    }
+    // rounding does not matter: F only has to contain bbox(A) strictly
+    fx0 = std::min(fx0, std::nextafter(ba.x0, -INFINITY));
+    fy0 = std::min(fy0, std::nextafter(ba.y0, -INFINITY));
+    fx1 = std::max(fx1, std::nextafter(ba.x1, INFINITY));
+    fy1 = std::max(fy1, std::nextafter(ba.y1, INFINITY));
+    R[0].ext.xy = {fx0, fy0, fx1, fy0, fx1, fy1, fx0, fy1};
+  }
+  auto reversed = [](Ring r, bool hole) {
+    i64 m = r.n();
+    for (i64 i = 0, j = m - 1; i < j; ++i, --j) {
+      std::swap(r.xy[2 * i], r.xy[2 * j]);
+      std::swap(r.xy[2 * i + 1], r.xy[2 * j + 1]);
+    }
+    r.hole = hole;
+    return r;
+  };
+  for (const Polygon& p : A) {
+    R[0].holes.push_back(reversed(p.ext, true));
+    for (const Ring& h : p.holes) {
+      R.emplace_back();
+      R.back().ext = reversed(h, false);
+    }
+  }
+  std::vector<Polygon> nB = negated(B);
+  // S = R ⊕ (−B) as exact boundary edges (layer 1)
+  std::vector<EdgeIn> in;
+  std::vector<ov::BEdge> S;
+  Overlay o(g);
+  o.max_crossings = L.crossings;
+  if (kb == 1) {
+    const Ring& f = nB[0].ext;
+    operand_edges(g, R, f.x(0), f.y(0), in);
+    for (EdgeIn& e : in) e.layer = 1;
+  } else {
+    std::vector<EdgeIn> sin;
+    if (kb == 2) {
+      const Ring& f = nB[0].ext;
+      std::vector<std::vector<EdgeIn>> parts;
+      segment_sum(g, R, f.x(0), f.y(0), f.x(1), f.y(1), parts);
+      for (auto& p : parts) sin.insert(sin.end(), p.begin(), p.end());
+    } else {
+      if (conv_count(R, nB, L.conv_segments) > L.conv_segments) {
+        out.status = RESOURCE;
+        return;
+      }
+      convolution(g, R, nB, sin);
+    }
+    o.run(sin, ov::UNION, S);
+    if (o.exceeded()) {
+      out.status = RESOURCE;
+      return;
+    }
+    for (const ov::BEdge& e : S) in.push_back(EdgeIn{e.line, e.from, e.to, 1, 1});
+  }
+  // G on layer 0
+  {
+    DD x0 = ov::dd_sum(ba.x0, -bb.x0), x1 = ov::dd_sum(ba.x1, -bb.x1);
+    DD y0 = ov::dd_sum(ba.y0, -bb.y0), y1 = ov::dd_sum(ba.y1, -bb.y1);
+    if (!(x0.hi - x0.hi == 0 && x1.hi - x1.hi == 0 && y0.hi - y0.hi == 0 && y1.hi - y1.hi == 0)) {
+      out.status = OVERFLOW;
+      return;
+    }
+    i64 first = (i64)g.pts.size();
+    g.point(x0, y0);
+    g.point(x1, y0);
+    g.point(x1, y1);
+    g.point(x0, y1);
+    ov::add_ring(g, first, 4, 1, 0, in);
+  }
+  o.run(in, ov::DIFFERENCE, out);
 }
 
 }  // namespace ms

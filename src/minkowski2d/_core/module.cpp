@@ -512,6 +512,7 @@ void bind_collision(nb::module_& m);  // collision.cpp
 void bind_decompose(nb::module_& m);  // decompose.cpp
 void bind_planning(nb::module_& m);   // planning.cpp
 void bind_overlay(nb::module_& m);    // overlay.cpp
+void bind_general(nb::module_& m);    // general.cpp
 void bind_union(nb::module_& m);      // union.cpp
 
 }  // namespace mk_bind
@@ -530,7 +531,7 @@ NB_MODULE(_ext, m) {
   m.attr("SHAPE") = (int)mk::SHAPE;
   m.attr("EMPTY") = (int)mk::EMPTY;
   m.attr("INTERNAL") = (int)mk::INTERNAL;
-  m.attr("LIMIT") = (int)mk::LIMIT;
+  m.attr("RESOURCE") = (int)mk::RESOURCE;
   m.attr("INT_LIMIT") = (long long)mk::INT_LIMIT;
   m.attr("ERRBOUND") = mk::ERRBOUND;
   m.attr("MINBOUND") = mk::MINBOUND;
@@ -575,5 +576,6 @@ NB_MODULE(_ext, m) {
   bind_planning(m);
   bind_decompose(m);
   bind_overlay(m);
+  bind_general(m);
   bind_union(m);
 }

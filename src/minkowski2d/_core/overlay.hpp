@@ -433,11 +433,12 @@ class Overlay {
 
   // counters (for tests and limits)
   i64 n_pairs = 0, n_crossings = 0, n_vertices = 0, n_edges = 0;
-  // Work limit: at most pair_budget candidate pairs (box-overlapping edge pairs, each
-  // classified) per run, -1 for none. Beyond it the run stops: `limited` is set, the
-  // boundary is empty and the rings have status LIMIT.
-  i64 pair_budget = -1;
-  bool limited = false;
+  // work budget: a run that would node more crossings, or classify more candidate
+  // pairs (box-overlapping edge pairs), stops (exceeded() is then true and the result is
+  // empty); the caller reports RESOURCE
+  i64 max_crossings = (i64)1 << 62;
+  i64 max_pairs = (i64)1 << 62;
+  bool exceeded() const { return over_; }
   // from this many edges on, candidate pairs come from a grid (boxes.hpp segment_pairs)
   i64 grid_min = 512;
 
@@ -478,13 +479,195 @@ class Overlay {
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
     arrange(in, rule);
-    if (limited) {
+    if (over_) {
       out.clear();
-      out.status = LIMIT;
+      out.status = RESOURCE;
+      return;
+    }
+    trace(out);
+    if (out.status == OK) finish_rounded(out);
+  }
+  // as run, without the check after rounding (the check's own re-run uses it)
+  void run_raw(const std::vector<EdgeIn>& in, int rule, Rings& out) {
+    arrange(in, rule);
+    if (over_) {
+      out.clear();
+      out.status = RESOURCE;
       return;
     }
     trace(out);
   }
+  void finish_rounded(Rings& out);
+
+  // Lower-dimensional parts of the union of rings (layer 0, weight 1, every ring convex
+  // and counter-clockwise, e.g. piece sums): points inside the regularized union that
+  // lie in no ring's interior. Pieces of such points (segments where rings meet from
+  // both sides, continued along the union's boundary where the same line goes on) come
+  // out as polylines, isolated points (an exact fit) as points; coordinates rounded.
+  // `rings` are the input edge lists, one per ring (for the point test).
+  void degenerate(const std::vector<std::vector<EdgeIn>>& rings, std::vector<double>& lines,
+                  std::vector<i64>& line_off, std::vector<double>& points) {
+    std::vector<EdgeIn> in;
+    for (auto& r : rings) in.insert(in.end(), r.begin(), r.end());
+    keep_zero_ = true;
+    arrange(in, UNION);
+    keep_zero_ = false;
+    line_off.assign(1, 0);
+    const i64 nv = (i64)av_.size(), np = (i64)pcs_.size();
+    // classify pieces: 1 degenerate (inside on both sides, covered by no interior),
+    // 2 on the boundary and covered by no interior (every boundary piece)
+    std::vector<char> kind(np, 0);
+    std::vector<char> at_boundary(nv, 0), at_degen(nv, 0);
+    for (i64 e = 0; e < np; ++e) {
+      const Piece& p = pcs_[e];
+      bool ib = p.b0 >= 1, ia = p.b0 + p.c0 >= 1;
+      if (ib && ia && p.b0 - p.n0 == 0) {
+        kind[e] = 1;
+        at_degen[p.l] = at_degen[p.r] = 1;
+      } else if (ib != ia) {
+        kind[e] = 2;
+        at_boundary[p.l] = at_boundary[p.r] = 1;
+      }
+    }
+    // adjacency of kinds 1 and 2
+    std::vector<std::vector<i64>> inc(nv);
+    for (i64 e = 0; e < np; ++e)
+      if (kind[e]) {
+        inc[pcs_[e].l].push_back(e);
+        inc[pcs_[e].r].push_back(e);
+      }
+    auto other = [&](i64 e, i64 v) { return pcs_[e].l == v ? pcs_[e].r : pcs_[e].l; };
+    // the same line going on: parallel and the other way round the vertex
+    auto straight = [&](i64 e, i64 f) {
+      return g_.turn(pcs_[e].line, 1, pcs_[f].line, 1) == 0;
+    };
+    std::vector<char> used(np, 0);
+    auto emit_vertex = [&](std::vector<double>& out, i64 v) {
+      double x, y;
+      g_.rounded(av_[v], x, y);
+      out.push_back(x);
+      out.push_back(y);
+    };
+    for (i64 e0 = 0; e0 < np; ++e0) {
+      if (kind[e0] != 1 || used[e0]) continue;
+      // grow a chain both ways through degenerate pieces at vertices where exactly two
+      // degenerate pieces meet, then continue along collinear boundary pieces
+      std::vector<i64> chain{pcs_[e0].l, pcs_[e0].r};
+      used[e0] = 1;
+      for (int side = 0; side < 2; ++side) {
+        i64 last = e0;
+        while (true) {
+          i64 v = side == 0 ? chain.back() : chain.front();
+          i64 next = -1, cnt = 0;
+          for (i64 f : inc[v])
+            if (f != last && kind[f] == 1) {
+              ++cnt;
+              next = f;
+            }
+          if (cnt != 1 || used[next]) {
+            // the line may go on along the boundary
+            next = -1;
+            if (cnt == 0)
+              for (i64 f : inc[v])
+                if (kind[f] == 2 && !used[f] && straight(last, f) && other(f, v) != other(last, v))
+                  next = f;
+            if (next < 0) break;
+          }
+          used[next] = 1;
+          i64 w = other(next, v);
+          if (side == 0)
+            chain.push_back(w);
+          else
+            chain.insert(chain.begin(), w);
+          last = next;
+          if (kind[next] == 2) {
+            // keep going straight along the boundary only
+            while (true) {
+              i64 nn = -1;
+              for (i64 f : inc[w])
+                if (f != next && kind[f] == 2 && !used[f] && straight(next, f)) nn = f;
+              if (nn < 0) break;
+              used[nn] = 1;
+              w = other(nn, w);
+              if (side == 0)
+                chain.push_back(w);
+              else
+                chain.insert(chain.begin(), w);
+              next = nn;
+            }
+            break;
+          }
+        }
+      }
+      // drop the chain's straight-on inner vertices
+      std::vector<i64> keep{chain[0]};
+      for (std::size_t k = 1; k + 1 < chain.size(); ++k) {
+        // straight on when the two pieces' lines through the vertex are parallel
+        i64 pe = -1, ne = -1;
+        for (i64 f : inc[chain[k]]) {
+          i64 o = other(f, chain[k]);
+          if (o == chain[k - 1] && (kind[f])) pe = f;
+          if (o == chain[k + 1] && (kind[f])) ne = f;
+        }
+        if (pe >= 0 && ne >= 0 && straight(pe, ne)) continue;
+        keep.push_back(chain[k]);
+      }
+      keep.push_back(chain.back());
+      for (i64 v : keep) emit_vertex(lines, v);
+      line_off.push_back((i64)lines.size() / 2);
+    }
+    // isolated points: vertices away from the boundary and from degenerate pieces,
+    // inside the union, in no ring's interior
+    std::vector<double> bx0, bx1, by0, by1;
+    std::vector<char> inside_all(nv, 1), touched(nv, 0);
+    for (i64 e = 0; e < np; ++e) {
+      const Piece& p = pcs_[e];
+      bool ok = p.b0 >= 1 && p.b0 + p.c0 >= 1;
+      for (i64 v : {p.l, p.r}) {
+        touched[v] = 1;
+        if (!ok) inside_all[v] = 0;
+      }
+    }
+    for (i64 v = 0; v < nv; ++v) {
+      if (!touched[v] || !inside_all[v] || at_degen[v] || at_boundary[v]) continue;
+      if (covered(rings, av_[v])) continue;
+      emit_vertex(points, v);
+    }
+  }
+
+ private:
+  // Is global vertex v in the interior of one of the (convex, counter-clockwise) rings?
+  bool covered(const std::vector<std::vector<EdgeIn>>& rings, i64 v) const {
+    const Vert& V = g_.verts[v];
+    for (const auto& r : rings) {
+      // box test on the approximations first
+      bool in_box = true;
+      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+      for (const EdgeIn& e : r) {
+        const Vert& a = g_.verts[e.v0];
+        x0 = std::min(x0, a.x.v - a.x.e);
+        x1 = std::max(x1, a.x.v + a.x.e);
+        y0 = std::min(y0, a.y.v - a.y.e);
+        y1 = std::max(y1, a.y.v + a.y.e);
+      }
+      if (V.x.v + V.x.e < x0 || V.x.v - V.x.e > x1 || V.y.v + V.y.e < y0 || V.y.v - V.y.e > y1)
+        in_box = false;
+      if (!in_box) continue;
+      bool inside = true;
+      for (const EdgeIn& e : r) {
+        // the edge runs along its line from v0 to v1: the side against that direction
+        int s = g_.side(e.line, v) * g_.along(e.line, e.v1, e.v0);
+        if (s <= 0) {
+          inside = false;
+          break;
+        }
+      }
+      if (inside) return true;
+    }
+    return false;
+  }
+
+ public:
 
  private:
   Geo& g_;
@@ -506,9 +689,13 @@ class Overlay {
     int c0, c1;     // change of w0, w1 crossing upwards
     int b0, b1;     // winding numbers below
     i64 from, to;   // boundary direction (local ids)
+    int n0;         // layer-0 weight of the edges with their inside below (for
+                    // degenerate(): the rings covering the piece's own points)
   };
   std::vector<Piece> pcs_, bnd_;
   int rule_ = UNION;
+  bool over_ = false;
+  bool keep_zero_ = false;
 
   i64 find(i64 a) {
     while (uf_[a] != a) {
@@ -532,12 +719,14 @@ class Overlay {
   void arrange(const std::vector<EdgeIn>& in, int rule) {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
-    limited = false;
+    over_ = false;
     local_vertices(in);
     intersect();
-    if (limited) {
+    if (over_) {
+      splits_.clear();
+      newv_.clear();
+      ed_.clear();
       bnd_.clear();
-      vg_.clear();
       return;
     }
     split();
@@ -697,10 +886,8 @@ class Overlay {
       by1_[i] = next_up(std::max(ay1, by1));
     }
     auto on_pair = [&](i64 i, i64 j) {
-      if (pair_budget >= 0 && n_pairs >= pair_budget) {
-        limited = true;
-        return false;
-      }
+      if (n_pairs >= max_pairs) over_ = true;
+      if (over_) return false;
       classify(i, j);
       return true;
     };
@@ -737,6 +924,7 @@ class Overlay {
   }
 
   void classify(i64 i, i64 j) {
+    if (over_) return;
     ++n_pairs;
     const EdgeIn &s = ed_[i], &t = ed_[j];
     const i64 p = s.v0, q = s.v1, r = t.v0, u = t.v1;
@@ -764,7 +952,10 @@ class Overlay {
       return;
     }
     // a proper crossing: a new vertex
-    ++n_crossings;
+    if (++n_crossings > max_crossings) {
+      over_ = true;
+      return;
+    }
     i64 node = (i64)vg_.size() + (i64)newv_.size();
     newv_.push_back(g_.vert_cross(s.line, t.line));
     splits_.push_back(Split{i, node});
@@ -896,12 +1087,15 @@ class Overlay {
     for (std::size_t i = 0; i < pkey_.size();) {
       std::size_t j = i;
       Piece pc = raw[pkey_[i].second];
-      pc.c0 = pc.c1 = 0;
+      pc.c0 = pc.c1 = pc.n0 = 0;
       for (; j < pkey_.size() && pkey_[j].first == pkey_[i].first; ++j) {
-        pc.c0 += raw[pkey_[j].second].c0;
-        pc.c1 += raw[pkey_[j].second].c1;
+        const Piece& q = raw[pkey_[j].second];
+        pc.c0 += q.c0;
+        pc.c1 += q.c1;
+        if (q.c0 < 0) pc.n0 -= q.c0;
       }
-      if (pc.c0 != 0 || pc.c1 != 0) pcs_.push_back(pc);
+      // keep_zero_: a piece where rings meet from both sides stays (degenerate())
+      if (pc.c0 != 0 || pc.c1 != 0 || (keep_zero_ && j > i + 1)) pcs_.push_back(pc);
       i = j;
     }
     n_edges = (i64)pcs_.size();
@@ -1216,6 +1410,164 @@ class Overlay {
 };
 
 // ------------------------------------------------------------------------------------
+// the output contract after rounding
+
+// Drops repeated vertices (neighbours rounded to the same double pair) from every ring of
+// `r`, and rings left with fewer than three. A polygon whose exterior vanished loses its
+// holes too. A vertex that rounding puts exactly on the line through its neighbours is
+// kept: the output is the rounded exact vertices, no more and no fewer (an exactly
+// collinear *exact* vertex never reaches it).
+inline void clean_rounded(Rings& r) {
+  Rings out;
+  out.status = r.status;
+  std::vector<double> x, y;
+  for (std::size_t p = 0; p + 1 < r.poly_off.size(); ++p) {
+    bool ext_kept = false;
+    for (i64 k = r.poly_off[p]; k < r.poly_off[p + 1]; ++k) {
+      x.clear();
+      y.clear();
+      const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1], m = r1 - r0;
+      for (i64 i = r0; i < r1; ++i) {
+        i64 j = i + 1 < r1 ? i + 1 : r0;
+        if (m > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) continue;
+        x.push_back(r.xy[2 * i]);
+        y.push_back(r.xy[2 * i + 1]);
+      }
+      if (x.size() < 3) continue;
+      // start again at the smallest vertex (x, then y)
+      std::size_t s0 = 0;
+      for (std::size_t i = 1; i < x.size(); ++i)
+        if (x[i] < x[s0] || (x[i] == x[s0] && y[i] < y[s0])) s0 = i;
+      std::rotate(x.begin(), x.begin() + s0, x.end());
+      std::rotate(y.begin(), y.begin() + s0, y.end());
+      bool is_ext = k == r.poly_off[p];
+      if (is_ext)
+        ext_kept = true;
+      else if (!ext_kept)
+        continue;
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        out.xy.push_back(x[i]);
+        out.xy.push_back(y[i]);
+      }
+      out.ring_off.push_back((i64)out.xy.size() / 2);
+    }
+    if (ext_kept) out.poly_off.push_back((i64)out.ring_off.size() - 1);
+  }
+  r = std::move(out);
+}
+
+// True when the rounded rings are a valid polygon set (exact signs on the doubles): no
+// two edges cross or overlap; a ring meets itself only where consecutive edges share
+// their vertex; two rings may touch at points -- a vertex of one on the other, or a
+// common vertex -- without crossing there. That is OGC validity up to the connectedness
+// of interiors, which rounding cannot break without one of these events.
+inline bool valid_rounded(const Rings& r) {
+  const i64 nr = (i64)r.ring_off.size() - 1;
+  const i64 n = (i64)r.xy.size() / 2;
+  std::vector<i64> ring_of;
+  ring_of.reserve(n);
+  for (i64 k = 0; k < nr; ++k)
+    for (i64 i = r.ring_off[k]; i < r.ring_off[k + 1]; ++i) ring_of.push_back(k);
+  auto nxt = [&](i64 i) {
+    return i + 1 < r.ring_off[ring_of[i] + 1] ? i + 1 : r.ring_off[ring_of[i]];
+  };
+  auto prv = [&](i64 i) { return i > r.ring_off[ring_of[i]] ? i - 1 : r.ring_off[ring_of[i] + 1] - 1; };
+  auto X = [&](i64 i) { return r.xy[2 * i]; };
+  auto Y = [&](i64 i) { return r.xy[2 * i + 1]; };
+  auto same = [&](i64 a, i64 b) { return X(a) == X(b) && Y(a) == Y(b); };
+  auto orient = [&](i64 a, i64 b, i64 c) {
+    return cross_sign(X(a), Y(a), X(b), Y(b), X(a), Y(a), X(c), Y(c));
+  };
+  // directions v -> a in angle order
+  auto angle_less = [&](i64 v, i64 a, i64 b) {
+    auto up = [&](i64 w) {
+      return Y(w) > Y(v) || (Y(w) == Y(v) && X(w) > X(v));
+    };
+    bool ua = up(a), ub = up(b);
+    if (ua != ub) return ua;
+    return orient(v, a, b) > 0;
+  };
+  // is direction v -> q strictly inside the counter-clockwise arc from v -> a to v -> b?
+  auto in_arc = [&](i64 v, i64 a, i64 b, i64 q) {
+    if (angle_less(v, a, b)) return angle_less(v, a, q) && angle_less(v, q, b);
+    return angle_less(v, a, q) || angle_less(v, q, b);
+  };
+  // rings i and j cross at their common vertex when j's two edges are separated by i's
+  auto cross_at = [&](i64 i, i64 j) {
+    bool in1 = in_arc(i, prv(i), nxt(i), prv(j)), in2 = in_arc(i, prv(i), nxt(i), nxt(j));
+    return in1 != in2;
+  };
+  std::vector<double> x0(n), x1(n), y0(n), y1(n);
+  for (i64 i = 0; i < n; ++i) {
+    i64 j = nxt(i);
+    x0[i] = std::min(X(i), X(j));
+    x1[i] = std::max(X(i), X(j));
+    y0[i] = std::min(Y(i), Y(j));
+    y1[i] = std::max(Y(i), Y(j));
+  }
+  bool ok = true;
+  box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 e, i64 f) {
+    if (!ok) return;
+    const i64 a = e, b = nxt(e), c = f, d = nxt(f);
+    const bool one_ring = ring_of[e] == ring_of[f];
+    int o1 = orient(a, b, c), o2 = orient(a, b, d);
+    if (o1 * o2 > 0) return;
+    int o3 = orient(c, d, a), o4 = orient(c, d, b);
+    if (o3 * o4 > 0) return;
+    if (o1 == 0 && o2 == 0) {
+      // collinear: they may only share an end point, as consecutive edges of one ring
+      // or edges of two rings
+      auto key = [&](i64 i) { return X(a) != X(b) ? X(i) : Y(i); };
+      double lo1 = std::min(key(a), key(b)), hi1 = std::max(key(a), key(b));
+      double lo2 = std::min(key(c), key(d)), hi2 = std::max(key(c), key(d));
+      if (hi1 < lo2 || hi2 < lo1) return;
+      if (hi1 == lo2 || hi2 == lo1) {
+        bool consecutive = one_ring && (b == c || d == a);
+        if (consecutive || !one_ring) return;
+      }
+      ok = false;
+      return;
+    }
+    if (o1 && o2 && o3 && o4) {  // a proper crossing
+      ok = false;
+      return;
+    }
+    // one common point
+    if (one_ring && (b == c || d == a)) return;  // consecutive edges at their vertex
+    if (one_ring) {
+      ok = false;  // a ring touching itself
+      return;
+    }
+    // two rings touch: a common vertex, or a vertex of one inside an edge of the other
+    i64 v = -1, w = -1;  // a vertex of each at the point, if any
+    for (i64 p : {a, b})
+      for (i64 q : {c, d})
+        if (same(p, q)) v = p, w = q;
+    if (v >= 0) {
+      if (cross_at(v, w)) ok = false;
+      return;
+    }
+    // a vertex u of one ring inside edge (s, t) of the other: its neighbours must not lie
+    // strictly on both sides of that edge
+    i64 u, s0, t0;
+    if (o1 == 0) u = c, s0 = a, t0 = b;
+    else if (o2 == 0) u = d, s0 = a, t0 = b;
+    else if (o3 == 0) u = a, s0 = c, t0 = d;
+    else u = b, s0 = c, t0 = d;
+    if (orient(s0, t0, prv(u)) * orient(s0, t0, nxt(u)) < 0) ok = false;
+  });
+  return ok;
+}
+
+// The remedy when rounding alone broke validity (exact features closer than an ulp):
+// the rounded rings, now plain doubles, are overlaid again (union of their winding
+// numbers: exteriors +1 inside, holes -1), which nodes the new crossings exactly and
+// rounds them in turn; repeated until valid (Halperin and Packer's iterated snap
+// rounding plays this role on an integer grid). The result is the exact regularized set
+// of the rounded polygon: every vertex within an ulp or two of the exact result.
+inline void rerun_rounded(Rings& r);
+
+// ------------------------------------------------------------------------------------
 // the cascaded union
 
 // Union (layer 0, w >= 1) of parts given as edge lists: groups of up to `leaf` parts are
@@ -1226,10 +1578,12 @@ class Cascade {
  public:
   explicit Cascade(Geo& g, i64 leaf = 4) : g_(g), o_(g), leaf_(leaf < 1 ? 1 : leaf) {}
   i64 n_crossings = 0, n_runs = 0;
+  i64 max_crossings = (i64)1 << 62;  // over all runs; then RESOURCE
 
   void unite(const std::vector<std::vector<EdgeIn>>& parts, Rings& out) {
     out.clear();
     if (parts.empty()) return;
+    o_.max_crossings = max_crossings - n_crossings;
     std::vector<EdgeIn> in;
     if ((i64)parts.size() <= leaf_) {
       for (auto& p : parts) in.insert(in.end(), p.begin(), p.end());
@@ -1238,6 +1592,10 @@ class Cascade {
       std::vector<BEdge> a, b;
       rec(parts, 0, mid, a);
       rec(parts, mid, parts.size(), b);
+      if (o_.exceeded()) {
+        out.status = RESOURCE;
+        return;
+      }
       add_boundary(a, 0, in);
       add_boundary(b, 0, in);
     }
@@ -1253,6 +1611,7 @@ class Cascade {
   void count() {
     n_crossings += o_.n_crossings;
     ++n_runs;
+    o_.max_crossings = max_crossings - n_crossings;
   }
   std::size_t split_point(std::size_t lo, std::size_t hi) const {
     // leaves of size leaf_: split at a multiple of leaf_ near the middle
@@ -1261,6 +1620,7 @@ class Cascade {
   }
   void rec(const std::vector<std::vector<EdgeIn>>& parts, std::size_t lo, std::size_t hi,
            std::vector<BEdge>& out) {
+    if (o_.exceeded()) return;
     std::vector<EdgeIn> in;
     if ((i64)(hi - lo) <= leaf_) {
       for (std::size_t k = lo; k < hi; ++k) in.insert(in.end(), parts[k].begin(), parts[k].end());
@@ -1281,6 +1641,8 @@ class Cascade {
   }
 };
 
+inline void finish_rounded_impl(Rings& r, int depth);
+
 // ------------------------------------------------------------------------------------
 // helpers to feed an overlay
 
@@ -1296,6 +1658,36 @@ inline void add_ring(Geo& g, i64 first, i64 n, int w, int layer, std::vector<Edg
     out.push_back(EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, layer});
   }
 }
+
+inline void rerun_rounded(Rings& r) {
+  Geo g;
+  std::vector<EdgeIn> in;
+  for (std::size_t k = 0; k + 1 < r.ring_off.size(); ++k) {
+    i64 first = (i64)g.pts.size(), m = r.ring_off[k + 1] - r.ring_off[k];
+    for (i64 i = r.ring_off[k]; i < r.ring_off[k + 1]; ++i)
+      g.point(dd(r.xy[2 * i]), dd(r.xy[2 * i + 1]));
+    add_ring(g, first, m, 1, 0, in);
+  }
+  Overlay o(g);
+  Rings out;
+  o.run_raw(in, UNION, out);
+  r = std::move(out);
+}
+
+// Cleans the rounded rings and checks them; re-nodes them (a few times at most) when
+// rounding made them invalid.
+inline void finish_rounded_impl(Rings& r, int depth) {
+  clean_rounded(r);
+  if (valid_rounded(r)) return;
+  if (depth >= 4) {
+    r.status = INTERNAL;
+    return;
+  }
+  rerun_rounded(r);
+  if (r.status == OK) finish_rounded_impl(r, depth + 1);
+}
+
+inline void Overlay::finish_rounded(Rings& out) { finish_rounded_impl(out, 0); }
 
 }  // namespace ov
 }  // namespace mk

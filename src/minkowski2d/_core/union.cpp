@@ -11,6 +11,7 @@
 
 #include "bind.hpp"
 #include "exact.hpp"
+#include "minkowski.hpp"
 #include "union.hpp"
 
 namespace nb = nanobind;
@@ -61,7 +62,7 @@ std::vector<mk::ov::P> general_ring(const double* xy, i64 lo, i64 hi) {
   return out;
 }
 
-// union_convex(xy (N, 2) float64, offsets (P + 1,), budget=-1, cull=True) -> (xy,
+// union_convex(xy (N, 2) float64, offsets (P + 1,), max_crossings, max_pairs, cull=True) -> (xy,
 // ring_off, poly_off, status, (pieces, culled, kept, rounds, runs, pairs, crossings),
 // (polygon, vertex)): the exact union (winding number >= 1) of polygons given as rings,
 // meant for convex ones (any orientation; repeated and collinear vertices, points and
@@ -69,9 +70,10 @@ std::vector<mk::ov::P> general_ring(const double* xy, i64 lo, i64 hi) {
 // union so far. A ring that is not convex (a rounded convex sum can turn both ways by
 // an ulp) is still united exactly, counter-clockwise by its turn at the lowest vertex,
 // never tested for containment. A non-finite coordinate gives status NONFINITE and
-// (polygon, vertex); a work budget (candidate pairs of the overlays, -1: none)
-// exceeded gives LIMIT.
-nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 budget, bool cull) {
+// (polygon, vertex); more crossings noded or candidate pairs classified (all overlay
+// runs together) than the limits gives RESOURCE.
+nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 max_crossings, i64 max_pairs,
+                       bool cull) {
   const i64 n = (i64)XY.shape(0), np = (i64)OFF.shape(0) - 1;
   if (XY.shape(1) != 2) throw nb::value_error("union_convex: coordinates must have shape (n, 2)");
   const i64* off = OFF.data();
@@ -119,7 +121,8 @@ nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 budget, bool cull) {
       mk::un::PointSource src{&pts, &po, &convex};
       mk::un::with_workspace([&](mk::un::Workspace& w) {
         w.u.cull = cull;
-        w.u.set_budget(budget);
+        w.u.max_crossings = max_crossings;
+        w.u.max_pairs = max_pairs;
         w.u.unite(src, out);
         st = w.u.st;
         return 0;
@@ -129,12 +132,13 @@ nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 budget, bool cull) {
   return result(out, st, bad_poly, bad_vertex);
 }
 
-// sum_pieces_union(pieces of A (coords, offsets), pieces of B, budget=-1, cull=True) ->
+// sum_pieces_union(pieces of A (coords, offsets), pieces of B, max_crossings, max_pairs,
+// cull=True) ->
 // (xy, ring_off, poly_off, status, stats, (piece, vertex)): the union of all piece sums
 // (the decomposition method), pieces that cannot change it dropped before noding; a
 // piece that is not convex gives its status and (piece, vertex), B's numbered after A's.
-nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64> OB, i64 budget,
-                           bool cull) {
+nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64> OB,
+                           i64 max_crossings, i64 max_pairs, bool cull) {
   for (auto [P, O] : {std::pair{&PA, &OA}, std::pair{&PB, &OB}}) {
     const i64 n = (i64)P->shape(0), np = (i64)O->shape(0) - 1;
     if (P->shape(1) != 2) throw nb::value_error("sum_pieces: coordinates must have shape (n, 2)");
@@ -149,7 +153,7 @@ nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64>
   {
     nb::gil_scoped_release nogil;
     mk::un::sum_pieces_union(PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(), OB.data(),
-                             (i64)OB.shape(0) - 1, out, st, budget, cull, &bad);
+                             (i64)OB.shape(0) - 1, out, st, max_crossings, max_pairs, cull, &bad);
   }
   return result(out, st, bad, -1);
 }
@@ -157,10 +161,14 @@ nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64>
 }  // namespace
 
 void bind_union(nb::module_& m) {
+  // the default limits: those of the sums (minkowski.hpp Limits: crossings), and as
+  // many candidate pairs as 64 per crossing allowed
+  const i64 cross = mk::ms::Limits().crossings, pairs = cross * 64;
   m.def("union_convex", &union_convex, "xy"_a.noconvert(), "offsets"_a.noconvert(),
-        "budget"_a = -1, "cull"_a = true);
+        "max_crossings"_a = cross, "max_pairs"_a = pairs, "cull"_a = true);
   m.def("sum_pieces_union", &sum_pieces_union, "pa"_a.noconvert(), "oa"_a.noconvert(),
-        "pb"_a.noconvert(), "ob"_a.noconvert(), "budget"_a = -1, "cull"_a = true);
+        "pb"_a.noconvert(), "ob"_a.noconvert(), "max_crossings"_a = cross, "max_pairs"_a = pairs,
+        "cull"_a = true);
 }
 
 }  // namespace mk_bind

@@ -33,12 +33,14 @@
 //           that vertex lies in int(U) and meets int(P); int(P) is connected and misses
 //           dU by (a), so int(P), hence P, lies in U.
 //     Anything else keeps the piece: keeping is always correct, dropping is proved.
-//  4. Work limit. `budget` bounds the candidate pairs of every overlay run together (each
-//     pair is classified; crossings, the memory, are a subset): beyond it the result is
-//     Status LIMIT and no rings (the caller raises ResourceLimitError).
+//  4. Work limits. max_crossings bounds the crossings noded by all overlay runs together
+//     (each is a new vertex: the memory), max_pairs the candidate pairs classified (the
+//     time): beyond either the result is Status RESOURCE and no rings (the caller raises
+//     ResourceLimitError).
 #pragma once
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -417,9 +419,9 @@ struct UnionStats {
 // piece is skipped).
 class ConvexUnion {
  public:
-  explicit ConvexUnion(Geo& g, i64 budget = -1) : g_(g), o_(g), idx_(g), budget_(budget) {}
-  i64 budget() const { return budget_; }
-  void set_budget(i64 b) { budget_ = b; }
+  explicit ConvexUnion(Geo& g) : g_(g), o_(g), idx_(g) {}
+  // work limits over all runs (see 4. above)
+  i64 max_crossings = (i64)1 << 62, max_pairs = (i64)1 << 62;
 
   UnionStats st;
   BoundaryIndex& index() { return idx_; }
@@ -456,8 +458,9 @@ class ConvexUnion {
         double dx = p.x.hi - cx, dy = p.y.hi - cy;
         r = std::max(r, dx * dx + dy * dy);
       }
-      area[k] = m >= 3 ? std::max(a, 0.0) : -1;  // -1: no area, skipped
-      reach[k] = r;
+      // -1: no area, skipped (an overflowing or NaN heuristic counts as large)
+      area[k] = m < 3 ? -1.0 : (a >= 0 && a < INFINITY ? a : (a < 0 ? 0.0 : DBL_MAX));
+      reach[k] = r == r ? r : DBL_MAX;
     }
     std::vector<std::pair<double, i64>> key;
     key.reserve(n);
@@ -516,7 +519,6 @@ class ConvexUnion {
   Geo& g_;
   ov::Overlay o_;
   BoundaryIndex idx_;
-  i64 budget_;
   std::vector<BEdge> ubnd_;   // the boundary of the union so far
   std::vector<i64> uverts_;   // its vertices in sweep order
   std::vector<std::vector<EdgeIn>> pending_;
@@ -526,7 +528,7 @@ class ConvexUnion {
     out.status = code;
     return code;
   }
-  int finish_limit(Rings& out) { return finish(out, LIMIT); }
+  int finish_limit(Rings& out) { return finish(out, RESOURCE); }
 
   static void add_boundary(const std::vector<BEdge>& b, int group, std::vector<EdgeIn>& in) {
     for (const BEdge& e : b) in.push_back(EdgeIn{e.line, e.from, e.to, 1, 0, group});
@@ -535,12 +537,13 @@ class ConvexUnion {
   template <class Out>
   bool run(const std::vector<EdgeIn>& in, Out& out,
            const std::vector<const std::vector<i64>*>& sorted = {}) {
-    o_.pair_budget = budget_ < 0 ? -1 : std::max<i64>(0, budget_ - st.pairs);
+    o_.max_crossings = std::max<i64>(0, max_crossings - st.crossings);
+    o_.max_pairs = std::max<i64>(0, max_pairs - st.pairs);
     o_.run(in, ov::UNION, out, sorted);
     ++st.runs;
     st.pairs += o_.n_pairs;
     st.crossings += o_.n_crossings;
-    return !o_.limited;
+    return !o_.exceeded();
   }
 
   // pending pieces united with U: the new U (and its index)
@@ -706,7 +709,7 @@ struct Workspace {
     g.lines.clear();
     g.verts.clear();
     u.cull = true;
-    u.set_budget(-1);
+    u.max_crossings = u.max_pairs = (i64)1 << 62;
   }
 };
 
@@ -835,7 +838,7 @@ struct SumSource {
 
 // The decomposition method: all sums of the convex pieces of A (pa, offsets oa, na
 // pieces) and of B, united by u (whose geometry is g). Returns OK, a piece's normalize
-// code (*bad: which piece, B's after A's), OVERFLOW or LIMIT; the rings in out.
+// code (*bad: which piece, B's after A's), OVERFLOW or RESOURCE; the rings in out.
 inline int sum_pieces_union(ConvexUnion& u, const double* pa, const i64* oa, i64 na,
                             const double* pb, const i64* ob, i64 nb, Rings& out,
                             i64* bad = nullptr) {
@@ -865,11 +868,13 @@ inline int sum_pieces_union(ConvexUnion& u, const double* pa, const i64* oa, i64
 
 // The same with this thread's workspace (see with_workspace).
 inline int sum_pieces_union(const double* pa, const i64* oa, i64 na, const double* pb,
-                            const i64* ob, i64 nb, Rings& out, UnionStats& st, i64 budget = -1,
+                            const i64* ob, i64 nb, Rings& out, UnionStats& st,
+                            i64 max_crossings = (i64)1 << 62, i64 max_pairs = (i64)1 << 62,
                             bool cull = true, i64* bad = nullptr) {
   return with_workspace([&](Workspace& w) {
     w.u.cull = cull;
-    w.u.set_budget(budget);
+    w.u.max_crossings = max_crossings;
+    w.u.max_pairs = max_pairs;
     int code = sum_pieces_union(w.u, pa, oa, na, pb, ob, nb, out, bad);
     st = w.u.st;
     return code;

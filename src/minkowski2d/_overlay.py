@@ -1,0 +1,104 @@
+"""The exact overlay of the compiled core, as the public modules use it: rings in (as
+ragged float64 arrays), shapely geometries out. One place for the conversion of the
+core's ragged results into shapely Polygons / MultiPolygons.
+
+Examples
+--------
+>>> from minkowski2d._overlay import overlay
+>>> sq = [(0, 0), (2, 0), (2, 2), (0, 2)]
+>>> overlay([sq, [(1, 1), (3, 1), (3, 3), (1, 3)]]).wkt
+'POLYGON ((0 0, 2 0, 2 1, 3 1, 3 3, 1 3, 1 2, 0 2, 0 0))'
+>>> overlay([sq, [(1, 1), (3, 1), (3, 3), (1, 3)]], layers=[0, 1], rule="difference").area
+3.0
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ._core import _ext
+from .errors import GeometryError, OverflowGeometryError, ResourceLimitError
+
+__all__ = ["overlay", "geometries"]
+
+RULES = {
+    "union": _ext.OVERLAY_UNION,
+    "difference": _ext.OVERLAY_DIFFERENCE,
+    "intersection": _ext.OVERLAY_INTERSECTION,
+}
+
+
+def geometries(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, group_off: np.ndarray) -> np.ndarray:
+    """shapely geometries of the core's ragged rings (each polygon's exterior first):
+    per group a Polygon, a MultiPolygon, or an empty Polygon (vectorized)."""
+    import shapely
+
+    K = len(group_off) - 1
+    out = np.empty(K, dtype=object)
+    if len(xy) == 0:
+        out[:] = [shapely.Polygon() for _ in range(K)]
+        return out
+    # close the rings: the first vertex again after the last of each ring
+    lens = np.diff(ro)
+    idx = np.arange(len(xy) + len(lens)) - np.repeat(np.arange(len(lens)), lens + 1)
+    ends = np.cumsum(lens + 1) - 1
+    idx[ends] = ro[:-1]
+    coords = xy[idx]
+    rco = np.concatenate([[0], np.cumsum(lens + 1)]).astype(np.int64)
+    multi = shapely.from_ragged_array(
+        shapely.GeometryType.MULTIPOLYGON, coords, (rco, po, group_off)
+    )
+    parts = shapely.get_num_geometries(multi)
+    one = parts == 1
+    out[one] = shapely.get_geometry(multi[one], 0)
+    many = parts > 1
+    out[many] = multi[many]
+    for k in np.flatnonzero(parts == 0):
+        out[k] = shapely.Polygon()
+    return out
+
+
+def overlay(
+    rings: list,
+    weights: Any = None,
+    layers: Any = None,
+    rule: str = "union",
+    argument: str = "result",
+) -> Any:
+    """The region ``rule`` selects from the winding numbers of ``rings`` (each an (n, 2)
+    float64 array-like; counter-clockwise rings have winding number ``weight`` inside;
+    ``layers`` 0 or 1 for the two winding numbers of the difference and intersection),
+    as one shapely geometry. Every decision is exact; vertices are correctly rounded."""
+    arrs = [np.asarray(r, dtype=np.float64).reshape(-1, 2) for r in rings]
+    n = len(arrs)
+    xy = np.ascontiguousarray(np.concatenate(arrs)) if arrs else np.empty((0, 2))
+    off = np.concatenate([[0], np.cumsum([len(a) for a in arrs])]).astype(np.int64)
+    w = np.ones(n, np.int64) if weights is None else np.asarray(weights, np.int64)
+    ly = np.zeros(n, np.int64) if layers is None else np.asarray(layers, np.int64)
+    out, ro, po, status, _ = _ext.overlay_rings(xy, np.empty((0, 2)), off, w, ly, RULES[rule])
+    check(int(status), argument)
+    return geometries(out, ro, po, np.array([0, len(po) - 1], np.int64))[0]
+
+
+def check(status: int, argument: str) -> None:
+    """Raise the error a status of the overlay stands for (OK: nothing)."""
+    if status == _ext.OK:
+        return
+    if status == _ext.OVERFLOW:
+        raise OverflowGeometryError(
+            f"{argument}: the result overflows float64 (a coordinate beyond ±1.8e308)",
+            argument=argument,
+            hint="scale the input down; the result's coordinates must fit in float64",
+        )
+    if status == _ext.RESOURCE:
+        raise ResourceLimitError(
+            f"{argument}: the overlay needs more work than its limits allow",
+            argument=argument,
+            hint="simplify the polygons",
+        )
+    raise GeometryError(
+        f"{argument}: internal error {status} in the exact overlay (please report it)",
+        argument=argument,
+    )
