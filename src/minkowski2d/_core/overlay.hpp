@@ -691,6 +691,7 @@ class Overlay {
     i64 from, to;   // boundary direction (local ids)
     int n0;         // layer-0 weight of the edges with their inside below (for
                     // degenerate(): the rings covering the piece's own points)
+    i64 src = -1;   // the input edge it comes from (its line's cached points: ll_)
   };
   std::vector<Piece> pcs_, bnd_;
   int rule_ = UNION;
@@ -845,6 +846,15 @@ class Overlay {
         if (e.group >= ngroups_) ngroups_ = e.group + 1;
       }
     }
+    // approximations of the input vertices and of the edges' lines, cached
+    lv_.resize(vg_.size());
+    for (std::size_t t = 0; t < vg_.size(); ++t) lv_[t] = lvert(vg_[t]);
+    ll_.resize(ed_.size());
+    for (std::size_t i = 0; i < ed_.size(); ++i) {
+      const Line& L = g_.lines[ed_[i].line];
+      const P &a = g_.pts[L.a], &b = g_.pts[L.b];
+      ll_[i] = LLine{fe(a.x), fe(a.y), fe(b.x), fe(b.y), plain(a) && plain(b)};
+    }
   }
   int ngroups_ = 0;
 
@@ -928,10 +938,10 @@ class Overlay {
     ++n_pairs;
     const EdgeIn &s = ed_[i], &t = ed_[j];
     const i64 p = s.v0, q = s.v1, r = t.v0, u = t.v1;
-    auto sd = [&](i64 line, i64 v, i64 e0, i64 e1) {
-      return (v == e0 || v == e1) ? 0 : g_.side(line, vg_[v]);
+    auto sd = [&](i64 e, i64 v, i64 e0, i64 e1) {
+      return (v == e0 || v == e1) ? 0 : side_ev(e, v);
     };
-    int oa = sd(s.line, r, p, q), ob = sd(s.line, u, p, q);
+    int oa = sd(i, r, p, q), ob = sd(i, u, p, q);
     if (oa * ob > 0) return;
     if (oa == 0 && ob == 0) {
       // collinear: each endpoint strictly inside the other edge splits it
@@ -941,7 +951,7 @@ class Overlay {
       if (q != r && q != u && inside_edge(j, q)) splits_.push_back(Split{j, q});
       return;
     }
-    int oc = sd(t.line, p, r, u), od = sd(t.line, q, r, u);
+    int oc = sd(j, p, r, u), od = sd(j, q, r, u);
     if (oc * od > 0) return;
     if (oa == 0 || ob == 0 || oc == 0 || od == 0) {
       // one common point, an endpoint of one of them
@@ -1014,6 +1024,8 @@ class Overlay {
     }
     const i64 m = (i64)av_.size();
     n_vertices = m;
+    lv_.resize(m);
+    for (i64 t = nv0; t < m; ++t) lv_[t] = lvert(av_[t]);
     // the input vertices are roots, in sweep order (local_vertices); sort the new ones
     // and merge
     vk_.clear();
@@ -1062,6 +1074,7 @@ class Overlay {
         pc.l = fwd ? prev : nxt;
         pc.r = fwd ? nxt : prev;
         pc.line = e.line;
+        pc.src = i;
         // the line runs from l's side to r's side when the edge does (fwd) and the line
         // runs along the edge (es > 0), or neither
         pc.s = (fwd == (es > 0)) ? 1 : -1;
@@ -1102,9 +1115,43 @@ class Overlay {
   }
 
   // side of arrangement vertex v against the line of piece e (oriented l -> r)
-  int side(const Piece& e, i64 v) const { return g_.side(e.line, av_[v]) * e.s; }
+  int side(const Piece& e, i64 v) const {
+    return (e.src >= 0 ? side_ev(e.src, v) : g_.side(e.line, av_[v])) * e.s;
+  }
+  // Side of local vertex v (an input vertex, or an arrangement vertex once order() has
+  // run: input vertices keep their ids) against the line of input edge i: from the
+  // cached plain coordinates when both are plain (one orientation of doubles), else
+  // Geo::side.
+  struct LLine {
+    FE ax, ay, bx, by;  // the line's two points (exact when e == 0)
+    bool plain;
+  };
+  struct LVert {
+    FE x, y;  // exact when plain (a point of two doubles)
+    bool plain;
+  };
+  std::vector<LLine> ll_;
+  std::vector<LVert> lv_;
+  int side_ev(i64 i, i64 v) const {
+    const LLine& L = ll_[i];
+    const LVert& V = lv_[v];
+    if (L.plain && V.plain)
+      return cross_sign(L.ax.v, L.ay.v, L.bx.v, L.by.v, L.ax.v, L.ay.v, V.x.v, V.y.v);
+    int s = fe_sign(cross(L.bx - L.ax, L.by - L.ay, V.x - L.ax, V.y - L.ay));
+    if (s != UNSURE) return s;
+    return g_.side(ed_[i].line, v < (i64)vg_.size() ? vg_[v] : av_[v]);
+  }
+  LVert lvert(i64 gv) const {
+    const Vert& V = g_.verts[gv];
+    return LVert{V.x, V.y, V.p >= 0 && V.x.e == 0 && V.y.e == 0};
+  }
   // pieces from one vertex: e1 below e2 when the turn from e1 to e2 is left
   bool slope_below(const Piece& e1, const Piece& e2) const {
+    if (e1.src >= 0 && e2.src >= 0 && ll_[e1.src].plain && ll_[e2.src].plain) {
+      const LLine &a = ll_[e1.src], &b = ll_[e2.src];
+      return cross_sign(a.ax.v, a.ay.v, a.bx.v, a.by.v, b.ax.v, b.ay.v, b.bx.v, b.by.v) * e1.s *
+                 e2.s > 0;
+    }
     return g_.turn(e1.line, e1.s, e2.line, e2.s) > 0;
   }
 
