@@ -76,15 +76,17 @@ inline int side_pq(const Geo& g, const P& p, const P& q, i64 v) {
 }
 
 // sign of (y(v) - y) for a vertex v and a double y
-inline int vy_cmp(const Geo& g, i64 v, double y) {
+// sign of (coordinate axis of v) - c for a vertex v and an exact c = hi + lo (DD)
+inline int vc_cmp(const Geo& g, i64 v, DD c, int axis) {
   const ov::Vert& V = g.verts[v];
-  if (V.p >= 0) return ov::dd_cmp(g.pts[V.p].y, ov::dd(y));
-  int s = fe_sign(V.y - FE{y, 0.0});
+  if (V.p >= 0) return ov::dd_cmp(axis == 0 ? g.pts[V.p].x : g.pts[V.p].y, c);
+  int s = fe_sign((axis == 0 ? V.x : V.y) - ov::fe(c));
   if (s != UNSURE) return s;
   Dy X, Y, W;
   g.exact(v, X, Y, W);
-  return (Y - Dy(y) * W).sign();
+  return ((axis == 0 ? X : Y) - ov::dy(c) * W).sign();
 }
+inline int vy_cmp(const Geo& g, i64 v, double y) { return vc_cmp(g, v, ov::dd(y), 1); }
 
 // ------------------------------------------------------------------------------------
 // the boundary of the union so far, indexed for containment tests
@@ -299,6 +301,15 @@ class BoundaryIndex {
       n_out += inside_[comp] == 0;
       return inside_[comp] != 0;
     }
+    // else a vertex not on the boundary: its winding number (a ray along its row)
+    for (i64 k = 0; k < m; ++k) {
+      i64 c = xs_.exact(p[k].x), r = ys_.exact(p[k].y);
+      if (c < 0 || r < 0) continue;
+      int w = winding_at(p[k], c, r);
+      if (w == ON_BOUNDARY) continue;
+      n_out += w < 1;
+      return w >= 1;
+    }
     ++n_no_cell;
     return false;
   }
@@ -371,6 +382,51 @@ class BoundaryIndex {
         int s = ov::orient(g_.pts[L.a], g_.pts[L.b], q) * dir;
         if (upward && s > 0) ++w;
         if (downward && s < 0) --w;
+      }
+    }
+    return w;
+  }
+
+  // The winding number of the boundary around the exact point q (a DD point in the
+  // closed cell (c, r)): a ray to +x along row r, half-open in y; ON_BOUNDARY when q
+  // lies on a boundary edge (or may: an edge whose line holds q and whose box holds it).
+  static constexpr int ON_BOUNDARY = -1000000;
+  int winding_at(const P& q, i64 c, i64 r) {
+    if (++epoch_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      epoch_ = 1;
+    }
+    const std::vector<BEdge>& E = *e_;
+    const double qx = q.x.hi, qy = q.y.hi;
+    int w = 0;
+    for (i64 cc = c; cc < xs_.n; ++cc) {
+      i64 cell = r * xs_.n + cc;
+      for (i64 t = start_[cell]; t < start_[cell + 1]; ++t) {
+        i64 i = cells_[t];
+        if (stamp_[i] == epoch_) continue;
+        stamp_[i] = epoch_;
+        // boxes are widened: these skips are safe for the exact q (|lo| <= ulp / 2)
+        if (bx1_[i] < next_down(qx) || by1_[i] < next_down(qy) ||
+            by0_[i] > next_up(qy))
+          continue;
+        const BEdge& e = E[i];
+        const ov::Line& L = g_.lines[e.line];
+        int o = ov::orient(g_.pts[L.a], g_.pts[L.b], q);
+        if (o == 0) {
+          // q on the edge's line: on the edge when between its ends (exactly)
+          int ax = g_.pts[L.a].x.hi != g_.pts[L.b].x.hi ? 0 : 1;
+          DD qc = ax == 0 ? q.x : q.y;
+          int s0 = vc_cmp(g_, e.from, qc, ax), s1 = vc_cmp(g_, e.to, qc, ax);
+          if (s0 * s1 <= 0) return ON_BOUNDARY;
+          continue;
+        }
+        int sf = vc_cmp(g_, e.from, q.y, 1), st = vc_cmp(g_, e.to, q.y, 1);
+        bool upward = sf <= 0 && st > 0, downward = st <= 0 && sf > 0;
+        if (!upward && !downward) continue;
+        int dir = g_.along(e.line, e.to, e.from);
+        int side = o * dir;
+        if (upward && side > 0) ++w;
+        if (downward && side < 0) --w;
       }
     }
     return w;
