@@ -66,7 +66,41 @@ namespace mk {
 struct BoxScratch {
   std::vector<i64> order;
   std::vector<std::vector<i64>> active;
+  struct Box {
+    double x0, x1, y0, y1;
+    i64 i;
+    int g;
+  };
+  std::vector<Box> sorted;
 };
+
+// box_pairs_grouped for few boxes: sorted by the left side, each box scans forward over
+// the boxes that start before its right side ends (contiguous, no active lists).
+template <class F>
+inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const double* ymin,
+                           const double* ymax, const int* group, BoxScratch& s, F&& on_pair) {
+  auto& b = s.sorted;
+  b.resize(n);
+  for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
+  std::sort(b.begin(), b.end(), [](const BoxScratch::Box& p, const BoxScratch::Box& q) {
+    return p.x0 < q.x0 || (p.x0 == q.x0 && p.i < q.i);
+  });
+  for (i64 t = 0; t < n; ++t) {
+    const BoxScratch::Box a = b[t];
+    for (i64 u = t + 1; u < n && b[u].x0 <= a.x1; ++u) {
+      const BoxScratch::Box& c = b[u];
+      if (c.y0 > a.y1 || a.y0 > c.y1) continue;
+      if (a.g >= 0 && c.g == a.g) continue;
+      const i64 i = a.i < c.i ? a.i : c.i, j = a.i < c.i ? c.i : a.i;
+      if constexpr (std::is_same_v<decltype(on_pair(i, j)), bool>) {
+        if (!on_pair(i, j)) return false;
+      } else {
+        on_pair(i, j);
+      }
+    }
+  }
+  return true;
+}
 
 // Like box_pairs, but a box of group g in [0, ngroups) is never paired with another box
 // of group g (group -1: paired with every box). With few groups each keeps its own

@@ -921,8 +921,12 @@ class Overlay {
                         on_pair))
         return;
     }
-    box_pairs_grouped(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
-                      ngroups_, boxes_, on_pair);
+    if (n < 256)
+      box_pairs_scan(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), boxes_,
+                     on_pair);
+    else
+      box_pairs_grouped(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
+                        ngroups_, boxes_, on_pair);
   }
 
   // vertex p strictly between the ends of edge i (p on its line)
