@@ -42,6 +42,23 @@ enum Status : int {
   UNHANDLED = 7,        // input of a kind this fast path does not read (list path)
   SHAPE = 8,            // not an (n, 2) sequence of pairs
   EMPTY = 9,            // no vertices
+  INVALID_POLYGON = 10,  // not a valid polygon: the reason (enum Invalid) says why
+};
+
+// Why a polygon is invalid (Status INVALID_POLYGON), with the ring and the vertex that
+// starts the offending edge (minkowski2d._polygon turns these into messages).
+enum Invalid : int {
+  RING_FEW_VERTICES = 1,  // a ring has fewer than 3 distinct vertices
+  RING_NO_AREA = 2,       // all vertices of a ring lie on one line
+  RING_SPIKE = 3,         // a ring doubles back on itself at a vertex
+  RING_CROSSES = 4,       // two edges of one ring cross
+  RING_OVERLAPS = 5,      // two edges of one ring share a segment
+  RING_TOUCHES = 6,       // two non-consecutive edges of one ring share a point
+  RINGS_CROSS = 7,        // two rings of one polygon cross (also through a shared point)
+  RINGS_OVERLAP = 8,      // two rings of one polygon share a segment
+  HOLE_OUTSIDE = 9,       // a hole does not lie inside the shell
+  HOLE_IN_HOLE = 10,      // a hole lies inside another hole
+  POLYGONS_OVERLAP = 11,  // two polygons of a collection overlap (checked on request)
 };
 
 constexpr double EPS = 1.1102230246251565e-16;                 // 2^-53

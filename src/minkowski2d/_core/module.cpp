@@ -511,6 +511,7 @@ inline nb::tuple check_finite(In2<double> P) {
 void bind_collision(nb::module_& m);  // collision.cpp
 void bind_decompose(nb::module_& m);  // decompose.cpp
 void bind_planning(nb::module_& m);   // planning.cpp
+void bind_polygon(nb::module_& m);    // polygon.cpp
 
 }  // namespace mk_bind
 
@@ -570,4 +571,5 @@ NB_MODULE(_ext, m) {
   bind_collision(m);
   bind_planning(m);
   bind_decompose(m);
+  bind_polygon(m);
 }
