@@ -81,18 +81,28 @@ inline i64 hertel_mehlhorn(const T* p, const i64* ids, i64 ntri, const i64* twin
       prv[h] = 3 * t + (k + 2) % 3;
     }
   }
-  if (merge) {
+  // Two passes: first remove only the diagonals that leave both endpoints strictly convex,
+  // then those that leave them straight as well. Making a reflex vertex straight early
+  // blocks every other diagonal at it (the L-shape fanned from its reflex corner gives 3
+  // pieces in one pass, 2 in two).
+  for (int pass = merge ? 0 : 2; pass < 2; ++pass) {
+    const bool strict = pass == 0;
     for (i64 h = 0; h < H; ++h) {
       i64 t = twin[h];
-      if (t < h) continue;  // boundary edge, or the pair was seen from the other side
+      if (t < h || !alive[h]) continue;  // boundary edge, seen from the other side, gone
       i64 fa = find(parent.data(), h / 3);
       i64 fb = find(parent.data(), t / 3);
       if (fa == fb) continue;
       i64 pn = prv[h], nn = nxt[h], tp = prv[t], tn = nxt[t];
       i64 u = org[h], v = org[t];
       // at u the merged face runs origin(pn) -> u -> dest(tn) = origin(next(tn))
-      if (!convex_at(p, org[pn], u, org[nxt[tn]])) continue;
-      if (!convex_at(p, org[tp], v, org[nxt[nn]])) continue;
+      if (strict) {
+        if (turn(p, org[pn], u, org[nxt[tn]]) <= 0) continue;
+        if (turn(p, org[tp], v, org[nxt[nn]]) <= 0) continue;
+      } else {
+        if (!convex_at(p, org[pn], u, org[nxt[tn]])) continue;
+        if (!convex_at(p, org[tp], v, org[nxt[nn]])) continue;
+      }
       nxt[pn] = tn;
       prv[tn] = pn;
       nxt[tp] = nn;
