@@ -69,6 +69,7 @@ class Status(enum.IntEnum):
     UNHANDLED = _ext.UNHANDLED
     SHAPE = _ext.SHAPE
     EMPTY = _ext.EMPTY
+    INVALID_POLYGON = _ext.INVALID_POLYGON
 
 
 class Operand(NamedTuple):
