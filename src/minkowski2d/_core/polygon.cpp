@@ -4,8 +4,9 @@
 //   check_polygons_f(coords (N, 2) float64, ring_offsets (R + 1,) int64,
 //                    polygon_offsets (P + 1,) int64, disjoint: bool)
 //       -> (status, reason, ring, vertex, orientation (R,) int8, disconnected (P,) bool)
-//   triangulate_polygons_f(coords, ring_offsets, polygon_offsets)
+//   triangulate_polygons_f(coords, ring_offsets, polygon_offsets, delaunay=True)
 //       -> (status, reason, ring, vertex, triangles (T, 3) int64)
+//   incircle_f / incircle_exact_f(ax, ay, bx, by, cx, cy, dx, dy) -> sign (exact.hpp)
 //
 // status is a Status (OK, NONFINITE, INVALID_POLYGON), reason an Invalid code, ring the
 // global ring index and vertex the index inside that ring (the caller's numbering, the
@@ -65,14 +66,14 @@ nb::tuple check_polygons(In2<double> C, In1<i64> RO, In1<i64> PO, bool disjoint)
                         owned(d, (std::size_t)P, 0));
 }
 
-nb::tuple triangulate_polygons(In2<double> C, In1<i64> RO, In1<i64> PO) {
+nb::tuple triangulate_polygons(In2<double> C, In1<i64> RO, In1<i64> PO, bool delaunay) {
   check_offsets(C, RO, PO);
   const i64 R = (i64)RO.shape(0) - 1, P = (i64)PO.shape(0) - 1;
   std::vector<i64> tri;
   mk::polygon::Problem pr;
   {
     nb::gil_scoped_release nogil;
-    pr = mk::polygon::triangulate(C.data(), RO.data(), R, PO.data(), P, tri);
+    pr = mk::polygon::triangulate(C.data(), RO.data(), R, PO.data(), P, tri, delaunay);
   }
   if (!pr.ok()) tri.clear();
   return nb::make_tuple(pr.status, pr.reason, pr.ring, pr.vertex,
@@ -118,7 +119,13 @@ void bind_polygon(nb::module_& m) {
   m.def("box_pairs_f", &box_pairs_array, "xmin"_a.noconvert(), "xmax"_a.noconvert(),
         "ymin"_a.noconvert(), "ymax"_a.noconvert());
   m.def("triangulate_polygons_f", &triangulate_polygons, "coords"_a.noconvert(),
-        "ring_offsets"_a.noconvert(), "polygon_offsets"_a.noconvert());
+        "ring_offsets"_a.noconvert(), "polygon_offsets"_a.noconvert(), "delaunay"_a = true);
+  m.def("incircle_f",
+        [](double ax, double ay, double bx, double by, double cx, double cy, double dx,
+           double dy) { return mk::incircle(ax, ay, bx, by, cx, cy, dx, dy); });
+  m.def("incircle_exact_f",
+        [](double ax, double ay, double bx, double by, double cx, double cy, double dx,
+           double dy) { return mk::incircle_exact(ax, ay, bx, by, cx, cy, dx, dy); });
 }
 
 }  // namespace mk_bind

@@ -27,9 +27,82 @@
 namespace mk {
 namespace polygon {
 
-// Triangles of one checked Work (w.run() returned OK), appended to tri (3 ids each).
+// Lawson's flips towards the constrained Delaunay triangulation: an edge between two
+// triangles whose quadrilateral is strictly convex is flipped while the far vertex lies
+// strictly inside the other triangle's circumcircle (exact incircle; cocircular: no
+// flip). Boundary edges are never flipped. Each flip makes the sorted angle vector
+// larger, so it ends; the triangles keep their vertices, orientation and union.
+// Triangles as point ids, 3 per triangle, counter-clockwise.
 template <class T>
-void triangulate_work(const Work<T>& w, std::vector<i64>& tri) {
+void delaunay_flips(const Work<T>& w, std::vector<i64>& t) {
+  const i64 ntri = (i64)t.size() / 3, H = 3 * ntri;
+  if (ntri < 2) return;
+  // twins by sorting the half-edges on their unordered end points
+  std::vector<i64> order(H), twin(H, -1);
+  for (i64 h = 0; h < H; ++h) order[h] = h;
+  auto a_of = [&](i64 h) { return t[h]; };
+  auto b_of = [&](i64 h) { return t[3 * (h / 3) + (h % 3 + 1) % 3]; };
+  std::sort(order.begin(), order.end(), [&](i64 x, i64 y) {
+    i64 x0 = std::min(a_of(x), b_of(x)), x1 = std::max(a_of(x), b_of(x));
+    i64 y0 = std::min(a_of(y), b_of(y)), y1 = std::max(a_of(y), b_of(y));
+    return x0 < y0 || (x0 == y0 && (x1 < y1 || (x1 == y1 && x < y)));
+  });
+  for (i64 q = 0; q + 1 < H; ++q) {
+    i64 x = order[q], y = order[q + 1];
+    if (a_of(x) == b_of(y) && b_of(x) == a_of(y)) {
+      twin[x] = y;
+      twin[y] = x;
+      ++q;
+    }
+  }
+  auto P = [&](i64 p) { return w.prep[p]; };
+  auto orient = [&](i64 a, i64 b, i64 c) { return w.orient(P(a), P(b), P(c)); };
+  auto incircle_p = [&](i64 a, i64 b, i64 c, i64 d) {
+    return incircle(w.X(P(a)), w.Y(P(a)), w.X(P(b)), w.Y(P(b)), w.X(P(c)), w.Y(P(c)),
+                    w.X(P(d)), w.Y(P(d)));
+  };
+  std::vector<i64> stack;
+  for (i64 h = 0; h < H; ++h)
+    if (twin[h] > h) stack.push_back(h);
+  while (!stack.empty()) {
+    const i64 h = stack.back();
+    stack.pop_back();
+    const i64 g = twin[h];
+    if (g < 0) continue;
+    const i64 t1 = h / 3, k1 = h % 3, t2 = g / 3, k2 = g % 3;
+    // t1 = (a, c, b) with h: a -> c; t2 = (c, a, d) with g: c -> a
+    const i64 a = t[3 * t1 + k1], c = t[3 * t1 + (k1 + 1) % 3], b = t[3 * t1 + (k1 + 2) % 3];
+    const i64 d = t[3 * t2 + (k2 + 2) % 3];
+    if (incircle_p(a, c, b, d) <= 0) continue;
+    if (orient(b, a, d) <= 0 || orient(d, c, b) <= 0) continue;  // not strictly convex
+    const i64 h_cb = 3 * t1 + (k1 + 1) % 3, h_ba = 3 * t1 + (k1 + 2) % 3;
+    const i64 h_ad = 3 * t2 + (k2 + 1) % 3, h_dc = 3 * t2 + (k2 + 2) % 3;
+    const i64 o_cb = twin[h_cb], o_ba = twin[h_ba], o_ad = twin[h_ad], o_dc = twin[h_dc];
+    // new t1 = (a, d, b), t2 = (c, b, d); the diagonal b - d
+    t[3 * t1] = a;
+    t[3 * t1 + 1] = d;
+    t[3 * t1 + 2] = b;
+    t[3 * t2] = c;
+    t[3 * t2 + 1] = b;
+    t[3 * t2 + 2] = d;
+    auto link = [&](i64 x, i64 y) {
+      twin[x] = y;
+      if (y >= 0) twin[y] = x;
+    };
+    link(3 * t1, o_ad);
+    link(3 * t1 + 2, o_ba);
+    link(3 * t2, o_cb);
+    link(3 * t2 + 2, o_dc);
+    link(3 * t1 + 1, 3 * t2 + 1);
+    for (i64 x : {3 * t1, 3 * t1 + 2, 3 * t2, 3 * t2 + 2})
+      if (twin[x] >= 0) stack.push_back(x);
+  }
+}
+
+// Triangles of one checked Work (w.run() returned OK), appended to tri (3 input ids each);
+// with delaunay, improved by Lawson's flips (delaunay_flips).
+template <class T>
+void triangulate_work(const Work<T>& w, std::vector<i64>& tri, bool delaunay) {
   const i64 np = w.npoints(), ne = w.nedges(), nd = (i64)w.diags.size();
   const i64 H = ne + 2 * nd;
   // half-edges: boundary edge e (from -> to), diagonal d as ne + 2d (u -> v) and
@@ -94,13 +167,14 @@ void triangulate_work(const Work<T>& w, std::vector<i64>& tri) {
   std::vector<std::uint8_t> seen(H, 0);
   std::vector<i64> face, merged, stack;
   std::vector<std::uint8_t> side, mside;
+  std::vector<i64> pts;  // triangles as point ids
   auto emit = [&](i64 a, i64 b, i64 c) {
     int s = w.orient(w.prep[a], w.prep[b], w.prep[c]);
     if (s == 0) return;
     if (s < 0) std::swap(b, c);
-    tri.push_back(w.prep[a]);
-    tri.push_back(w.prep[b]);
-    tri.push_back(w.prep[c]);
+    pts.push_back(a);
+    pts.push_back(b);
+    pts.push_back(c);
   };
   for (i64 h0 = 0; h0 < H; ++h0) {
     if (seen[h0]) continue;
@@ -196,12 +270,14 @@ void triangulate_work(const Work<T>& w, std::vector<i64>& tri) {
     const i64 u = merged[k - 1];
     for (std::size_t q = stack.size() - 1; q > 0; --q) emit(u, stack[q], stack[q - 1]);
   }
+  if (delaunay) delaunay_flips(w, pts);
+  for (i64 p : pts) tri.push_back(w.prep[p]);
 }
 
 // Check and triangulate every polygon; triangles appended to tri.
 template <class T>
 Problem triangulate(const T* xy, const i64* ring_off, i64 R, const i64* poly_off, i64 P,
-                    std::vector<i64>& tri) {
+                    std::vector<i64>& tri, bool delaunay = true) {
   Problem pr = check_finite(xy, ring_off, R);
   if (!pr.ok()) return pr;
   for (i64 p = 0; p < P; ++p) {
@@ -213,7 +289,7 @@ Problem triangulate(const T* xy, const i64* ring_off, i64 R, const i64* poly_off
     w.close_rings();
     pr = w.run();
     if (!pr.ok()) return pr;
-    triangulate_work(w, tri);
+    triangulate_work(w, tri, delaunay);
   }
   return Problem();
 }
