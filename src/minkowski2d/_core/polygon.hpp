@@ -108,8 +108,12 @@ struct Work {
   int orient(i64 a, i64 b, i64 c) const {
     return cross_sign(X(a), Y(a), X(b), Y(b), X(a), Y(a), X(c), Y(c));
   }
-  // orient on point ids
-  int orient_p(i64 a, i64 b, i64 c) const { return orient(prep[a], prep[b], prep[c]); }
+  // orient on point ids; a repeated point is straight at once (the filter cannot certify
+  // an exact zero: the exact fallback would decide every "v is an end of e")
+  int orient_p(i64 a, i64 b, i64 c) const {
+    if (c == a || c == b || a == b) return 0;
+    return orient(prep[a], prep[b], prep[c]);
+  }
   // direction p -> a before p -> b counter-clockwise from +x (a, b off p, not aligned)
   bool ccw_before(i64 p, i64 a, i64 b) const {
     bool ua = lexless(p, a), ub = lexless(p, b);

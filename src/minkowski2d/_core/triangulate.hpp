@@ -37,18 +37,20 @@ template <class T>
 void delaunay_flips(const Work<T>& w, std::vector<i64>& t) {
   const i64 ntri = (i64)t.size() / 3, H = 3 * ntri;
   if (ntri < 2) return;
-  // twins by sorting the half-edges on their unordered end points
-  std::vector<i64> order(H), twin(H, -1);
-  for (i64 h = 0; h < H; ++h) order[h] = h;
+  // twins by sorting the half-edges on their unordered end points (one i64 key each)
+  const i64 np = w.npoints();
+  std::vector<std::pair<i64, i64>> keyed(H);
+  std::vector<i64> twin(H, -1);
   auto a_of = [&](i64 h) { return t[h]; };
   auto b_of = [&](i64 h) { return t[3 * (h / 3) + (h % 3 + 1) % 3]; };
-  std::sort(order.begin(), order.end(), [&](i64 x, i64 y) {
-    i64 x0 = std::min(a_of(x), b_of(x)), x1 = std::max(a_of(x), b_of(x));
-    i64 y0 = std::min(a_of(y), b_of(y)), y1 = std::max(a_of(y), b_of(y));
-    return x0 < y0 || (x0 == y0 && (x1 < y1 || (x1 == y1 && x < y)));
-  });
+  for (i64 h = 0; h < H; ++h) {
+    const i64 a = a_of(h), b = b_of(h);
+    keyed[h] = {a < b ? a * np + b : b * np + a, h};
+  }
+  std::sort(keyed.begin(), keyed.end());
   for (i64 q = 0; q + 1 < H; ++q) {
-    i64 x = order[q], y = order[q + 1];
+    if (keyed[q].first != keyed[q + 1].first) continue;
+    const i64 x = keyed[q].second, y = keyed[q + 1].second;
     if (a_of(x) == b_of(y) && b_of(x) == a_of(y)) {
       twin[x] = y;
       twin[y] = x;
