@@ -203,17 +203,20 @@ def triangulate(
     name: str,
     hint: str | None = None,
     *,
+    delaunay: bool = True,
     what: str = "not a valid polygon",
 ) -> np.ndarray:
     """Check and triangulate every polygon: (T, 3) int64 vertex ids into
     ``rings.coords``, each triangle counter-clockwise; together they cover each polygon
     exactly with disjoint interiors and use input vertices only (where coordinates repeat,
     the smallest id). Polygons of a collection are triangulated one by one (their
-    triangles overlap where they do). Time O(n log n): a monotone partition by a plane
-    sweep, then each monotone face (de Berg et al., ch. 3)."""
+    triangles overlap where they do). A monotone partition by a plane sweep, each
+    monotone face by a stack (de Berg et al., ch. 3), O(n log n); then, with
+    ``delaunay``, Lawson's flips towards the constrained Delaunay triangulation (exact
+    incircle test), which Hertel-Mehlhorn turns into fewer convex pieces."""
     if len(rings.polygon_offsets) < 2:
         raise EmptyGeometryError(f"{name}: empty polygon", argument=name)
-    status, reason, ring, vertex, tri = _ext.triangulate_polygons_f(*_args(rings))
+    status, reason, ring, vertex, tri = _ext.triangulate_polygons_f(*_args(rings), bool(delaunay))
     if status:
         raise problem_error(status, reason, ring, vertex, rings, name, hint, what=what)
     return tri
