@@ -419,10 +419,11 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
         A simple polygon (any orientation), a polygon with holes, or a collection
         (their union is decomposed).
     method : {"hertel-mehlhorn", "triangulation"}
-        ``"triangulation"``: GEOS's constrained Delaunay triangulation (input vertices
-        only, holes supported). ``"hertel-mehlhorn"``: the triangles merged across every
-        diagonal whose removal keeps both its endpoints convex (at most four times the
-        optimal number of pieces).
+        ``"triangulation"``: the compiled core's exact triangulation (a monotone
+        partition by a plane sweep; input vertices only, holes supported).
+        ``"hertel-mehlhorn"``: the triangles merged across every diagonal whose removal
+        keeps both its endpoints convex (at most four times the optimal number of
+        pieces).
 
     Returns
     -------
@@ -442,10 +443,9 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
 
     Notes
     -----
-    Time O(n log n) for the triangulation and O(n) for the merge; every turn is decided
-    by the exact orientation predicate. GEOS triangulates the polygon scaled by a power
-    of two (largest |coordinate| in ``[2**19, 2**20)``); the pieces are scaled back, so
-    their vertices are the input vertices bit for bit at any magnitude.
+    Time O(n log n) for the triangulation and O(n) for the merge; every decision is an
+    exact sign (no GEOS), so the pieces' vertices are the input vertices bit for bit at
+    any magnitude.
 
     Examples
     --------
@@ -453,8 +453,8 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
     >>> L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
     >>> for piece in mk.convex_decomposition(L):
     ...     print(piece.tolist())
-    [[0.0, 0.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]]
     [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]
+    [[0.0, 0.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]]
     >>> len(mk.convex_decomposition(L, method="triangulation"))
     4
     """
