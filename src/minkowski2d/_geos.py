@@ -72,11 +72,10 @@ def checked_polygonal(geom: Any, name: str, hint: str, nonfinite_hint: str | Non
     the shell or inside another hole, parts of a MultiPolygon that overlap →
     SelfIntersectionError with ``hint``, naming the ring and vertex. A hole that touches
     the shell at two points (valid for CGAL, "interior is disconnected" for GEOS) is a
-    well-defined region: it is split into its parts (by GEOS's ``make_valid``, for the
-    GEOS operations that follow).
+    well-defined region: it is split into its parts (by the core's exact overlay: the
+    union of its rings, traced ring by ring, splits at the touching points).
     """
-    import shapely
-
+    from ._overlay import overlay
     from ._polygon import check, oriented, rings_of, to_geometry
 
     if geom.is_empty:
@@ -85,8 +84,9 @@ def checked_polygonal(geom: Any, name: str, hint: str, nonfinite_hint: str | Non
     rings = rings_of(geom)
     ck = check(rings, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
     if ck.disconnected.any():
-        with boundary(name, "splitting the polygon where its rings touch", overflow_raises=False):
-            geom = area_parts(shapely.make_valid(geom, method="structure"))
+        o = oriented(rings, ck.orientation)
+        ro = o.ring_offsets
+        geom = overlay([o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)], argument=name)
         multi = geom.geom_type == "MultiPolygon"
         rings = rings_of(geom)
         ck = check(rings, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
