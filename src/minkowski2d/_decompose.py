@@ -45,6 +45,18 @@ def triangles_of(geom: Any) -> tuple[np.ndarray, np.ndarray]:
     return rings.coords, triangulate(rings, "polygon")
 
 
+def decompose_rings(rings: Any, name: str, merge: bool) -> tuple[np.ndarray, np.ndarray]:
+    """Convex pieces of valid polygons given as ``_polygon.Rings``: ``(coords (N, 2)
+    float64, offsets)``; ``merge=False`` gives the triangles."""
+    ids = triangulate(rings, name)
+    if len(ids) == 0:
+        return np.empty((0, 2), np.float64), np.zeros(1, np.int64)
+    verts = rings.coords
+    twin = _twins(ids, len(verts))
+    vid, off = _ext.hertel_mehlhorn_f(verts, ids, twin, bool(merge))
+    return verts[vid], off
+
+
 def decompose(geom, merge: bool) -> tuple[np.ndarray, np.ndarray]:
     """Convex pieces of a valid Polygon / MultiPolygon: ``(coords (N, 2) float64, offsets)``.
 

@@ -198,6 +198,12 @@ def check(
     return Checked(orientation, disconnected)
 
 
+def probe(rings: Rings, *, disjoint: bool = False) -> tuple:
+    """The core's verdict without raising: ``(status, reason, ring, vertex,
+    orientation, disconnected)`` (``status`` 0 when valid)."""
+    return _ext.check_polygons_f(*_args(rings), bool(disjoint))
+
+
 def triangulate(
     rings: Rings,
     name: str,
