@@ -33,6 +33,7 @@ from __future__ import annotations
 import shutil
 import subprocess
 import tempfile
+from collections import Counter
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -118,10 +119,12 @@ def _cross(o: Point, a: Point, b: Point) -> Fraction:
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
 
 
-def drop_collinear(ring: list[Point]) -> list[Point]:
+def drop_collinear(ring: list[Point], keep: frozenset = frozenset()) -> list[Point]:
     """``ring`` without repeated vertices and without vertices lying exactly on the line
     through their neighbours (decided on the exact rationals; repeated until none is
-    left, so a run of collinear vertices goes as a whole)."""
+    left, so a run of collinear vertices goes as a whole), except those in ``keep``:
+    points where another ring of the result touches this one stay (the core keeps them,
+    so that rounding cannot move an edge off a touching vertex)."""
     out = list(ring)
     changed = True
     while changed and len(out) >= 3:
@@ -131,7 +134,7 @@ def drop_collinear(ring: list[Point]) -> list[Point]:
         for i, p in enumerate(out):
             prev = keep[-1] if keep else out[i - 1]
             nxt = out[(i + 1) % n]
-            if p == prev or _cross(prev, p, nxt) == 0:
+            if p == prev or (_cross(prev, p, nxt) == 0 and p not in keep):
                 changed = True
                 continue
             keep.append(p)
@@ -163,7 +166,9 @@ def _parse(text: str, n_pairs: int, keep_collinear: bool) -> tuple[list[CgalResu
         holes = int(take())
         area = Fraction(take())
         raw = [ring("outer")] + [ring("hole") for _ in range(holes)]
-        rings = raw if keep_collinear else [drop_collinear(r) for r in raw]
+        seen: Counter = Counter(p for r in raw for p in set(r))
+        touch = frozenset(p for p, c in seen.items() if c > 1)
+        rings = raw if keep_collinear else [drop_collinear(r, touch) for r in raw]
         results.append(
             CgalResult(
                 polygons=[[_ring_float(r) for r in rings]],

@@ -26,7 +26,7 @@ from minkowski2d.errors import (
 )
 
 from . import oracle
-from .strategies import convex_float, convex_int
+from .strategies import convex_float, convex_int, convex_tiny_offsets
 
 SETTINGS = settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 REL = 1e-12
@@ -197,6 +197,62 @@ def test_kernel_agrees_with_exact_python_path(a, b):
         assert h1 == h2
         if mode in (1, 2):
             assert abs(r1[0] - r2[0]) <= 1e-13 * max(1.0, abs(r2[0]))
+
+
+@SETTINGS
+@given(convex_tiny_offsets(), convex_tiny_offsets())
+def test_tiny_offsets_from_a_grid(a, b):
+    """Grid polygons with vertices moved or doubled by subnormal-to-1e-150 amounts:
+    edges of length ~1e-170, parallel edges, and values the kernels leave to the exact
+    path. Distance and penetration witnesses on the boundaries, as everywhere."""
+    check_pair(a, b)
+
+
+@SETTINGS
+@given(convex_tiny_offsets(), st.integers(-6, 6), st.integers(-6, 6))
+def test_tiny_offsets_shifted(a, dx, dy):
+    """B = A moved by a multiple of a quarter grid step (its hull after the rounding):
+    overlaps whose nearest boundary is a pair of parallel edges of A and B are common."""
+    b = oracle.hull([(x + dx * 0.25, y + dy * 0.25) for x, y in a])
+    check_pair(a, [(float(x), float(y)) for x, y in b])
+
+
+@SETTINGS
+@given(convex_int(max_size=10, bound=6), convex_int(max_size=10, bound=6))
+def test_small_fractions_exact_path(a, b):
+    """The degenerate-rich small-int pairs as Fractions: everything on the exact path."""
+    check_pair([(F(x), F(y)) for x, y in a], [(F(x), F(y)) for x, y in b])
+
+
+def test_penetration_witnesses_on_parallel_edges_regression():
+    """The exact path chose the first sub-edge at the smallest exact depth; with parallel
+    edges of A and -B that is one of two collinear sub-edges, and the origin's foot was on
+    the other: point_a = (1, 1.5) was off A (the hypothesis example; its 1.5e-173 sends
+    the pair to the exact path). The kernel already took an edge whose foot is on it."""
+    a = [(1.0, 0.0), (1.0, 1.0), (0.0, 1.0), (0.0, 1.4868162835879183e-173)]
+    b = [(x + 0.5, y + 0.5) for x, y in a]
+    p = mk.penetration(a, b)
+    assert p.depth == 0.5
+    assert p.normal.tolist() == [1.0, 0.0]
+    assert p.point_a.tolist() == [1.0, 1.0]
+    assert p.point_b.tolist() == [0.5, 1.0]
+    check_pair(a, b)
+    pm = mk.penetration_many([a], [b])
+    assert pm.point_a[0].tolist() == [1.0, 1.0] and pm.point_b[0].tolist() == [0.5, 1.0]
+    # the same on the exact path without tiny values: Fractions and ints beyond 2**53,
+    # and on the kernel (plain floats), all four directions
+    sq = [(0, 0), (2, 0), (2, 2), (0, 2)]
+    for v in [(1, 1), (-1, 1), (-1, -1), (1, -1)]:
+        other = [(x + v[0], y + v[1]) for x, y in sq]
+        want = mk.penetration(sq, other)
+        for conv, k in ((F, 1.0), (lambda t: t << 60, 2.0**60), (float, 1.0)):
+            pa = [(conv(x), conv(y)) for x, y in sq]
+            pb = [(conv(x), conv(y)) for x, y in other]
+            check_pair(pa, pb)
+            got = mk.penetration(pa, pb)
+            assert got.depth == want.depth * k
+            assert got.point_a.tolist() == (want.point_a * k).tolist()
+            assert got.point_b.tolist() == (want.point_b * k).tolist()
 
 
 # --------------------------------------------------------------------------------------

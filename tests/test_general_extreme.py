@@ -188,6 +188,9 @@ def test_no_geos_overlay_on_the_computing_path(monkeypatch):
         "make_valid",
         "simplify",
         "buffer",
+        "is_valid",
+        "is_valid_reason",
+        "constrained_delaunay_triangles",
     ):
         monkeypatch.setattr(shapely, f, boom)
     for method in (None, "decomposition", "convolution"):

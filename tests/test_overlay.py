@@ -145,6 +145,13 @@ SQ = [(0, 0), (2, 0), (2, 2), (0, 2)]
         ([[(0, 0), (4, 0), (2, 2)], [(0, 4), (2, 2), (4, 4)]], None),  # bow tie at a point
         ([[(0, 0), (6, 0), (0, 6)], [(0, 0), (0, 6), (-6, 0)], [(0, 0), (-6, 0), (0, -6)]], None),
         ([[(0, 0), (3, 3), (0, 3), (3, 0)]], None),  # a self-crossing ring
+        # a hole and a polygon touching the exterior inside one of its (straight) edges:
+        # the exterior keeps the touching vertex, or rounding would break the touch
+        (
+            [[(0, 0), (2, 3), (1, 0)], [(5, 0), (0, 5), (0, 3)], [(5, 1), (0, 1), (0, 2)],
+             [(0, 2), (5, 0), (0, 5), (2, 0), (3, 2)]],
+            None,
+        ),  # fmt: skip
     ],
 )
 def test_degenerate_cases(rings, weights):

@@ -294,15 +294,16 @@ TINY = 2.0**-540
 
 
 def test_planner_non_convex_obstacle_at_tiny_scale():
-    with pytest.raises(GeometryError) as e:
-        mk.MotionPlanner([[(x * TINY, y * TINY) for x, y in L]])
-    assert e.value.argument == "obstacles[0]"
+    # GEOS's triangulation failed at this scale (a GEOSException escaped); the core's
+    # exact triangulation has no scale
+    pl = mk.MotionPlanner([[(x * TINY, y * TINY) for x, y in L]])
+    p = pl.shortest_path((-TINY, -TINY), (4 * TINY, 4 * TINY))
+    assert len(p) == 3  # around the L's corner
 
 
 def test_planner_non_convex_robot_at_tiny_scale():
-    with pytest.raises(GeometryError) as e:
-        mk.MotionPlanner([], robot=[(x * TINY, y * TINY) for x, y in L])
-    assert e.value.argument == "robot"
+    pl = mk.MotionPlanner([], robot=[(x * TINY, y * TINY) for x, y in L])
+    assert pl.shortest_path((0, 0), (1, 1)).points.tolist() == [[0, 0], [1, 1]]
 
 
 def test_empty_shapely_point_query():

@@ -71,6 +71,7 @@ class Status(enum.IntEnum):
     EMPTY = _ext.EMPTY
     INTERNAL = _ext.INTERNAL
     RESOURCE = _ext.RESOURCE
+    INVALID_POLYGON = _ext.INVALID_POLYGON
 
 
 class Operand(NamedTuple):

@@ -1,6 +1,7 @@
 """The boundary with GEOS (shapely), shared by the modules that use it for booleans
 (general sums, erosion, nesting, offsetting): failures translated into GeometryErrors,
-polygon validation, and the shape of a polygonal result. One place for each rule.
+polygon validation (exact, by the compiled core: GEOS does not decide it), and the shape
+of a polygonal result. One place for each rule.
 
 Examples
 --------
@@ -22,10 +23,8 @@ import numpy as np
 from .errors import (
     EmptyGeometryError,
     GeometryError,
-    NonFiniteError,
     OverflowGeometryError,
     ResourceLimitError,
-    SelfIntersectionError,
 )
 
 __all__ = ["boundary", "checked_polygonal", "area_parts"]
@@ -65,32 +64,33 @@ def boundary(argument: str, what: str, overflow_raises: bool = True) -> Any:
 
 
 def checked_polygonal(geom: Any, name: str, hint: str, nonfinite_hint: str | None = None) -> Any:
-    """Validate a Polygon / MultiPolygon and orient it (exteriors CCW, holes CW).
+    """Validate a Polygon / MultiPolygon exactly and orient it (exteriors CCW, holes CW).
 
-    Empty → EmptyGeometryError; NaN/inf → NonFiniteError; a boundary that crosses itself →
-    SelfIntersectionError with ``hint``. A hole that touches the shell at two points
-    (valid for CGAL, "interior is disconnected" for GEOS) is a well-defined region: it is
-    split into its parts.
+    The checks are the compiled core's (:func:`minkowski2d._polygon.check`: exact signs at
+    every magnitude, no GEOS). Empty → EmptyGeometryError; NaN/inf → NonFiniteError; a
+    boundary that crosses or touches itself, rings that cross or overlap, a hole outside
+    the shell or inside another hole, parts of a MultiPolygon that overlap →
+    SelfIntersectionError with ``hint``, naming the ring and vertex. A hole that touches
+    the shell at two points (valid for CGAL, "interior is disconnected" for GEOS) is a
+    well-defined region: it is split into its parts (by the core's exact overlay: the
+    union of its rings, traced ring by ring, splits at the touching points).
     """
-    import shapely
+    from ._overlay import overlay
+    from ._polygon import check, oriented, rings_of, to_geometry
 
     if geom.is_empty:
         raise EmptyGeometryError(f"{name}: empty {geom.geom_type}", argument=name)
-    if not np.isfinite(shapely.get_coordinates(geom)).all():
-        raise NonFiniteError(
-            f"{name}: a coordinate is not finite", argument=name, hint=nonfinite_hint
-        )
-    # a validity test on unscaled extreme coordinates may overflow inside GEOS's own
-    # arithmetic; that is GEOS's business (its verdict stands), not a result overflow
-    with boundary(name, "validating the polygon", overflow_raises=False):
-        if not shapely.is_valid(geom):
-            reason = shapely.is_valid_reason(geom)
-            if not reason.startswith("Interior is disconnected"):
-                raise SelfIntersectionError(
-                    f"{name}: not a valid polygon ({reason})", argument=name, hint=hint
-                )
-            geom = shapely.make_valid(geom, method="structure")
-        return shapely.orient_polygons(geom)
+    multi = geom.geom_type == "MultiPolygon"
+    rings = rings_of(geom)
+    ck = check(rings, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
+    if ck.disconnected.any():
+        o = oriented(rings, ck.orientation)
+        ro = o.ring_offsets
+        geom = overlay([o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)], argument=name)
+        multi = geom.geom_type == "MultiPolygon"
+        rings = rings_of(geom)
+        ck = check(rings, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
+    return to_geometry(oriented(rings, ck.orientation), multi)
 
 
 def area_parts(geom: Any) -> Any:

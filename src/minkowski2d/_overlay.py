@@ -40,6 +40,18 @@ def geometries(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, group_off: np.nda
     if len(xy) == 0:
         out[:] = [shapely.Polygon() for _ in range(K)]
         return out
+    if K == 1 and len(po) <= 9:
+        # one result of a few polygons: built directly (a third of the vectorized cost)
+        polys = [
+            shapely.Polygon(xy[ro[po[p]] : ro[po[p] + 1]],
+                            [xy[ro[r] : ro[r + 1]] for r in range(po[p] + 1, po[p + 1])])
+            for p in range(len(po) - 1)
+        ]  # fmt: skip
+        out[0] = (
+            shapely.Polygon() if not polys else polys[0] if len(polys) == 1
+            else shapely.MultiPolygon(polys)
+        )  # fmt: skip
+        return out
     # close the rings: the first vertex again after the last of each ring
     lens = np.diff(ro)
     idx = np.arange(len(xy) + len(lens)) - np.repeat(np.arange(len(lens)), lens + 1)

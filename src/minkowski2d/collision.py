@@ -720,12 +720,17 @@ def _py_collide(A: list, sa: int, B: list, sb: int, mode: int) -> tuple[bool, li
     if mode == _DISTANCE:
         return True, _py_common_point(A, B, F)
 
-    # penetration: the nearest edge line, compared exactly (c^2 / |e|^2)
+    # penetration: the nearest edge line, compared exactly (c^2 / |e|^2), among the
+    # sub-edges whose foot is on them. Parallel edges of A and -B are two collinear
+    # sub-edges at the same exact depth, and the origin's foot lies on only one of them
+    # (or on their common vertex); the witnesses of the other are off the boundaries. The
+    # nearest line's foot is on D's boundary, so some sub-edge at the minimum depth has
+    # its foot on it: the restricted minimum is the depth.
     def depth2(k: int) -> Fraction:
         e = _sub(feats[k][1], feats[k][0])
         return Fraction(cs[k] * cs[k]) / _dt(e, e)
 
-    best = min(range(K), key=depth2)
+    best = min((k for k in range(K) if on(k)), key=depth2)
     return True, _py_edge_row(F[best][0], *feats[best], cs[best])
 
 

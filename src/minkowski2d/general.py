@@ -37,6 +37,7 @@ Neither operand needs to contain the origin.
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from functools import partial
 from typing import Any
@@ -45,7 +46,6 @@ import numpy as np
 
 from . import _options
 from ._coerce import as_array
-from ._geos import boundary, checked_polygonal
 from ._overlay import geometries
 from .batch import Ragged
 from .errors import (
@@ -71,9 +71,6 @@ DECOMPOSITIONS = ("hertel-mehlhorn", "triangulation")
 # --------------------------------------------------------------------------------------
 # limits and scale
 
-#: The operands are scaled by one power of two so that the largest |coordinate| lies in
-#: ``[2**(SCALE_EXPONENT - 1), 2**SCALE_EXPONENT)`` while GEOS works on them.
-SCALE_EXPONENT = 20
 #: ``method="decomposition"``: at most this many convex piece sums (pieces of A times
 #: pieces of B). Beyond it the default method switches to the convolution, an explicit
 #: ``method="decomposition"`` raises ResourceLimitError. (The 2048-vertex stars of the
@@ -95,71 +92,60 @@ CONE_SLACK = 1e-12
 PROVENANCE_TOLERANCE = 1e-9
 
 
-_boundary = boundary  # the GEOS boundary lives in _geos (shared with offset.py)
-
-
-def _exponent(x: Any) -> int:
-    """``e`` with ``2**(e-1) <= |x| < 2**e`` for a nonzero int or Fraction (exact)."""
-    f = Fraction(x)
-    p, q = abs(f.numerator), f.denominator
-    e = p.bit_length() - q.bit_length()
-    # p / q lies in (2**(e-1), 2**(e+1)): one exact comparison settles it
-    return e + 1 if (p << max(-e, 0)) >= (q << max(e, 0)) else e
-
-
-def _max_exponent(coords: np.ndarray) -> int | None:
-    """frexp exponent of the largest finite |coordinate| (None if all are zero)."""
-    c = np.abs(np.asarray(coords, dtype=np.float64)).ravel()
-    c = c[np.isfinite(c)]
-    if c.size == 0 or c.max() == 0:
-        return None
-    return int(np.frexp(c.max())[1])
-
-
 # --------------------------------------------------------------------------------------
 # input
 #
 # Reading an operand is two passes: _parse checks the types and keeps the raw
-# coordinates (no GEOS call), _build scales them by 2**k and validates them with GEOS.
-# The exponent k is chosen from both operands together (the sum scales by the same
-# factor), so GEOS never sees coordinates whose products over- or underflow.
+# coordinates, _build validates them exactly in the core (no GEOS). Nothing is scaled:
+# the core decides exactly at every magnitude and rounds each result vertex once.
 
 
 class _Operand:
-    """A validated operand: a shapely Polygon/MultiPolygon with positive area, or a
+    """A validated operand: polygons as ``_polygon.Rings`` (validated exactly, any
+    orientation: ``orientation[r]`` is +1 for a ring given counter-clockwise), or a
     degenerate convex set (point or segment) held as a (k, 2) float64 array."""
 
-    __slots__ = ("geom", "flat", "name")
+    __slots__ = ("rings", "orientation", "flat", "name", "_geom")
 
-    def __init__(self, geom: Any, flat: np.ndarray | None, name: str) -> None:
-        self.geom = geom
+    def __init__(self, rings: Any, orientation: Any, flat: np.ndarray | None, name: str) -> None:
+        self.rings = rings
+        self.orientation = orientation
         self.flat = flat
         self.name = name
+        self._geom = None
+
+    @property
+    def geom(self) -> Any:
+        """The operand as a shapely Polygon / MultiPolygon (exteriors CCW, holes CW)."""
+        if self._geom is None:
+            from ._polygon import oriented, to_geometry
+
+            multi = len(self.rings.polygon_offsets) > 2
+            self._geom = to_geometry(oriented(self.rings, self.orientation), multi)
+        return self._geom
 
     @property
     def convex_ring(self) -> np.ndarray | None:
         """The ring of a single convex polygon without holes (or the flat set), else None."""
         if self.flat is not None:
             return self.flat
-        g = self.geom
-        if g.geom_type != "Polygon" or len(g.interiors):
+        ro = self.rings.ring_offsets
+        if len(ro) != 2:
             return None
-        import shapely
-
         from ._dispatch import check_convex
 
-        ring = shapely.get_coordinates(g.exterior)[:-1]
+        ring = self.rings.coords[ro[0] : ro[1]]
+        if len(ring) > 1 and (ring[0] == ring[-1]).all():
+            ring = ring[:-1]
         return ring if check_convex(ring, self.name) else None
 
     def hull(self) -> np.ndarray:
         """Convex hull of the operand (exact, normalized)."""
         if self.flat is not None:
             return self.flat
-        import shapely
-
         from .convex import convex_hull
 
-        return np.asarray(convex_hull(shapely.get_coordinates(self.geom)), dtype=np.float64)
+        return np.asarray(convex_hull(self.rings.coords), dtype=np.float64)
 
 
 class _Raw:
@@ -173,20 +159,6 @@ class _Raw:
         self.kind = kind
         self.value = value
         self.name = name
-
-    def exponent(self) -> int | None:
-        """frexp exponent of the largest |coordinate| (None when all are zero)."""
-        import shapely
-
-        if self.kind == "geom":
-            return _max_exponent(shapely.get_coordinates(self.value))
-        if self.kind == "coords":
-            return _max_exponent(self.value)
-        if self.kind == "exact":
-            es = [_exponent(v) for p in self.value for v in p if v != 0]
-            return max(es) if es else None
-        es = [e for item in self.value if (e := item.exponent()) is not None]
-        return max(es) if es else None
 
 
 _EXACT_INT = 1 << 53
@@ -265,31 +237,69 @@ def _parse(obj: Any, name: str) -> _Raw:
     return _coords_raw(obj, name)
 
 
-def _scale_exponent(*raws: _Raw) -> int:
-    """The k of the common scale 2**k: the largest |coordinate| of all operands lands in
-    [2**(SCALE_EXPONENT - 1), 2**SCALE_EXPONENT). 0 when every coordinate is zero."""
-    es = [e for r in raws if (e := r.exponent()) is not None]
-    return SCALE_EXPONENT - max(es) if es else 0
+def _float_ring(raw: _Raw) -> np.ndarray:
+    """float64 coordinates of a parsed ring; exact values (Fractions, big ints) rounded
+    once, correctly; a value beyond float64, or one that would lose bits below 2**-1022,
+    is an OverflowGeometryError naming the vertex."""
+    if raw.kind == "coords":
+        return raw.value
+    name = raw.name
+    out = np.empty((len(raw.value), 2))
+    for k, p in enumerate(raw.value):
+        for j, v in enumerate(p):
+            try:
+                f = float(v)
+            except OverflowError:
+                f = math.inf
+            if math.isinf(f):
+                raise OverflowGeometryError(
+                    f"{name}: vertex {k} has a coordinate beyond float64 (±1.8e308)",
+                    argument=name,
+                    vertex=k,
+                    hint="scale the input down; coordinates must fit in float64",
+                )
+            if v != 0 and abs(f) < 2.0**-1022:
+                raise OverflowGeometryError(
+                    f"{name}: vertex {k} has a coordinate that underflows float64 (a "
+                    "nonzero value below 2**-1022 would be rounded to a multiple of "
+                    "2**-1074)",
+                    argument=name,
+                    vertex=k,
+                    hint="scale the input up; coordinates must be float64 normals",
+                )
+            out[k, j] = f
+    return out
 
 
-def _ldexp_geom(geom: Any, k: int) -> Any:
-    """``geom`` with every coordinate times 2**k (exact unless it under/overflows)."""
-    import shapely
-
-    if k == 0:
-        return geom
-    return shapely.transform(geom, lambda c: np.ldexp(c, k))
+_HINT = "the boundary must not cross itself; holes must lie inside"
 
 
-def _build(raw: _Raw, k: int) -> _Operand:
-    """Scale a parsed operand by 2**k and validate it (GEOS runs on scaled values)."""
-    import shapely
+def _checked(rings: Any, name: str, multi: bool) -> _Operand:
+    """An operand of validated rings (a polygon whose hole touches its shell twice is
+    split into its parts by the exact overlay)."""
+    from ._polygon import check, rings_of
+
+    ck = check(rings, name, _HINT, disjoint=multi)
+    if ck.disconnected.any():
+        from ._polygon import oriented
+
+        o = oriented(rings, ck.orientation)
+        ro = o.ring_offsets
+        g = _union_members_rings([o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)], name)
+        rings = rings_of(g)
+        ck = check(rings, name, _HINT, disjoint=True)
+    return _Operand(rings, ck.orientation, None, name)
+
+
+def _build(raw: _Raw) -> _Operand:
+    """Validate a parsed operand exactly (the core's checks; no GEOS)."""
+    from ._polygon import rings_of, rings_of_array
 
     name = raw.name
     if raw.kind == "items":
-        geoms = []
+        rings = []
         for item in raw.value:
-            op = _build(item, k)
+            op = _build(item)
             if op.flat is not None:
                 # uniting would drop it, yet {p} ⊕ B has area: refuse rather than lose it
                 raise ShapeError(
@@ -298,115 +308,57 @@ def _build(raw: _Raw, k: int) -> _Operand:
                     argument=item.name,
                     hint="pass the point or segment as an operand of its own",
                 )
-            geoms.append(op.geom)
-        u = shapely.get_parts(_union_members(geoms, name))
-        polys = u[shapely.get_type_id(u) == 3]
-        if len(polys) == 0:
+            from ._polygon import oriented
+
+            o = oriented(op.rings, op.orientation)
+            ro = o.ring_offsets
+            rings += [o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)]
+        g = _union_members_rings(rings, name)
+        if g.is_empty:
             raise ShapeError(f"{name}: the polygons have no area", argument=name)
-        g = polys[0] if len(polys) == 1 else shapely.multipolygons(polys)
-        return _Operand(_check_geom(g, name), None, name)
+        return _checked(rings_of(g), name, g.geom_type == "MultiPolygon")
     if raw.kind == "geom":
+        import shapely
+
         c = shapely.get_coordinates(raw.value)
         if not np.isfinite(c).all():
             raise NonFiniteError(f"{name}: a coordinate is not finite", argument=name)
-        return _Operand(_check_geom(_ldexp_geom(raw.value, k), name), None, name)
-    if raw.kind == "exact":
-        two = Fraction(2) ** k
-        ring = np.array([(float(x * two), float(y * two)) for x, y in raw.value])
-    else:
-        ring = np.ldexp(raw.value, k)
-    if _has_area(ring):
-        # not all on one line: a polygon (GEOS validates it); no hull needed
-        with _boundary(name, "building the polygon"):
-            poly = shapely.Polygon(ring)
-        return _Operand(_check_geom(poly, name), None, name)
-    from .convex import convex_hull
+        return _checked(rings_of(raw.value), name, raw.value.geom_type == "MultiPolygon")
+    ring = _float_ring(raw)
+    rings = rings_of_array(ring)
+    if len(ring):
+        from ._polygon import Invalid, probe
 
-    hull = np.asarray(convex_hull(ring), dtype=np.float64)
-    if len(hull) <= 2:
-        # a point, a segment, or collinear points: a degenerate convex set
-        return _Operand(None, hull, name)
-    with _boundary(name, "building the polygon"):
-        poly = shapely.Polygon(ring)
-    return _Operand(_check_geom(poly, name), None, name)
+        status, reason, _, _, orientation, disconnected = probe(rings)
+        if status == 0 and not disconnected.any():
+            return _Operand(rings, orientation, None, name)
+        if status and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
+            # a point, a segment, or collinear points: a degenerate convex set
+            from .convex import convex_hull
+
+            return _Operand(None, None, np.asarray(convex_hull(ring), dtype=np.float64), name)
+    return _checked(rings, name, False)
 
 
-def _union_members(geoms: list, name: str) -> Any:
-    """The union of validated polygons (exteriors CCW, holes CW), by the exact overlay;
+def _union_members_rings(rings: list, name: str) -> Any:
+    """The union of validated rings (exteriors CCW, holes CW), by the exact overlay;
     vertices where members cross are rounded to the nearest double."""
-    import shapely
-
     from ._overlay import overlay
 
-    rings = [shapely.get_coordinates(r)[:-1] for g in geoms for r in shapely.get_rings(g)]
     return overlay(rings, argument=name)
 
 
-def _has_area(ring: np.ndarray) -> bool:
-    """True when the finite points ``ring`` do not all lie on one line (exact signs)."""
-    from ._core import _ext
-
-    r = np.ascontiguousarray(ring, dtype=np.float64)
-    if r.ndim != 2 or len(r) < 3 or not np.isfinite(r).all():
-        return False
-    far = np.flatnonzero((r != r[0]).any(axis=1))
-    if len(far) == 0:
-        return False
-    p = np.broadcast_to(r[0], r.shape).copy()
-    q = np.broadcast_to(r[far[0]], r.shape).copy()
-    return bool(np.any(_ext.orient_f(p, q, r)))
-
-
-def _operands(*pairs: tuple[Any, str]) -> tuple[int, list[_Operand]]:
-    """Parse the operands, choose their common scale 2**k, build them scaled."""
-    raws = [_parse(obj, name) for obj, name in pairs]
-    k = _scale_exponent(*raws)
-    return k, [_build(r, k) for r in raws]
-
-
-def _check_geom(geom: Any, name: str) -> Any:
-    """Validate a Polygon / MultiPolygon and orient it (see :func:`_geos.checked_polygonal`)."""
-    return checked_polygonal(
-        geom, name, hint="the boundary must not cross itself; holes must lie inside"
-    )
-
-
-def _unscale(geom: Any, k: int, argument: str) -> Any:
-    """Scale a result back by 2**-k; OverflowGeometryError if a coordinate overflows, or
-    if the whole result lies below 2**-1022 and gradual underflow rounds it.
-
-    The scale back is exact except where a coordinate falls below 2**-1022 (gradual
-    underflow rounds it to a multiple of 2**-1074); while the result's largest
-    |coordinate| is 2**-1022 or more, that is at most 2**-53 of its extent."""
-    import shapely
-
-    if k == 0 or geom.is_empty:
-        return geom
-    with np.errstate(over="ignore", under="ignore"):
-        out = shapely.transform(geom, lambda c: np.ldexp(c, -k))
-    c = shapely.get_coordinates(out)
-    if not np.isfinite(c).all():
-        raise OverflowGeometryError(
-            f"{argument}: the result overflows float64 (a coordinate beyond ±1.8e308)",
-            argument=argument,
-            hint="scale the input down; the result's coordinates must fit in float64",
-        )
-    if np.abs(c).max() < 2.0**-1022 and not (np.ldexp(c, k) == shapely.get_coordinates(geom)).all():
-        raise OverflowGeometryError(
-            f"{argument}: the result underflows float64 (all its coordinates are below "
-            "2**-1022 and would be rounded to multiples of 2**-1074)",
-            argument=argument,
-            hint="scale the input up; the result's coordinates must be float64 normals",
-        )
-    return out
+def _operands(*pairs: tuple[Any, str]) -> list[_Operand]:
+    """Parse and validate the operands."""
+    return [_build(_parse(obj, name)) for obj, name in pairs]
 
 
 def _pieces(op: _Operand, method: str = "hertel-mehlhorn") -> Ragged:
     if op.flat is not None:
         return Ragged(op.flat, np.array([0, len(op.flat)], np.int64))
-    from ._decompose import decompose
+    from ._decompose import decompose_rings
 
-    coords, off = decompose(op.geom, merge=method == "hertel-mehlhorn")
+    coords, off = decompose_rings(op.rings, op.name, merge=method == "hertel-mehlhorn")
     return Ragged(coords, off)
 
 
@@ -419,10 +371,11 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
         A simple polygon (any orientation), a polygon with holes, or a collection
         (their union is decomposed).
     method : {"hertel-mehlhorn", "triangulation"}
-        ``"triangulation"``: GEOS's constrained Delaunay triangulation (input vertices
-        only, holes supported). ``"hertel-mehlhorn"``: the triangles merged across every
-        diagonal whose removal keeps both its endpoints convex (at most four times the
-        optimal number of pieces).
+        ``"triangulation"``: the compiled core's exact triangulation (a monotone
+        partition by a plane sweep; input vertices only, holes supported).
+        ``"hertel-mehlhorn"``: the triangles merged across every diagonal whose removal
+        keeps both its endpoints convex (at most four times the optimal number of
+        pieces).
 
     Returns
     -------
@@ -442,10 +395,9 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
 
     Notes
     -----
-    Time O(n log n) for the triangulation and O(n) for the merge; every turn is decided
-    by the exact orientation predicate. GEOS triangulates the polygon scaled by a power
-    of two (largest |coordinate| in ``[2**19, 2**20)``); the pieces are scaled back, so
-    their vertices are the input vertices bit for bit at any magnitude.
+    Time O(n log n) for the triangulation and O(n) for the merge; every decision is an
+    exact sign (no GEOS), so the pieces' vertices are the input vertices bit for bit at
+    any magnitude.
 
     Examples
     --------
@@ -453,19 +405,14 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
     >>> L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
     >>> for piece in mk.convex_decomposition(L):
     ...     print(piece.tolist())
-    [[0.0, 0.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]]
     [[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]
+    [[0.0, 0.0], [1.0, 1.0], [1.0, 2.0], [0.0, 2.0]]
     >>> len(mk.convex_decomposition(L, method="triangulation"))
     4
     """
     method = _options.choice(method, "method", DECOMPOSITIONS)
-    k, (P,) = _operands((poly, "poly"))
-    with _boundary("poly", "decomposing the polygon"):
-        R = _pieces(P, method)
-    if k == 0:
-        return R
-    # the pieces' vertices are input vertices: scaling back is exact and cannot overflow
-    return Ragged(np.ldexp(np.asarray(R.coords, dtype=np.float64), -k), R.offsets)
+    (P,) = _operands((poly, "poly"))
+    return _pieces(P, method)
 
 
 # --------------------------------------------------------------------------------------
@@ -473,77 +420,34 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
 
 
 class _Prepared:
-    """One operand, read and validated once: the validated operand (``op``, at its own
-    scale ``2**k``, see :func:`_operands`), and lazily its rings and convex pieces in the
-    caller's own units (float64, input vertices bit for bit)."""
+    """One operand, read and validated once (``op``), and lazily its rings and convex
+    pieces as the core's arrays (float64, input vertices bit for bit)."""
 
-    __slots__ = ("op", "k", "flat", "name", "_rings", "_pieces")
+    __slots__ = ("op", "flat", "name", "_pieces")
 
     def __init__(self, obj: Any, name: str) -> None:
-        raw = _parse(obj, name)
-        e = raw.exponent()
-        self.k = SCALE_EXPONENT - e if e is not None else 0
-        self.op = _build(raw, self.k)
+        self.op = _build(_parse(obj, name))
         self.flat = self.op.flat is not None
         self.name = name
-        self._rings: tuple | None = None
         self._pieces: Ragged | None = None
 
     def rings(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """(coordinates (N, 2), ring offsets, polygon offsets) in the caller's units; a
-        point or segment is one polygon of one ring of 1 or 2 vertices."""
-        if self._rings is None:
-            import shapely
-
-            if self.flat:
-                c = self._unscaled(self.op.flat)
-                self._rings = (c, np.array([0, len(c)], np.int64), np.array([0, 1], np.int64))
-            else:
-                # rings in order (each polygon: exterior, then holes), closing repeats
-                # kept (the core drops them); the core orients them itself
-                parts = shapely.get_parts(self.op.geom)
-                rings, which = shapely.get_rings(parts, return_index=True)
-                counts = shapely.get_num_coordinates(rings)
-                c = self._unscaled(shapely.get_coordinates(rings))
-                ro = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
-                po = np.searchsorted(which, np.arange(len(parts) + 1)).astype(np.int64)
-                self._rings = (c, ro, po)
-        return self._rings
-
-    def _unscaled(self, c: Any) -> np.ndarray:
-        """Coordinates in the caller's units, which the core computes in: an operand
-        beyond the float64 range (Fractions or huge ints) is an error here."""
-        c = np.asarray(c, np.float64)
-        if self.k == 0:
-            return c
-        with np.errstate(over="ignore", under="ignore"):
-            u = np.ldexp(c, -self.k)
-        if not np.isfinite(u).all():
-            raise OverflowGeometryError(
-                f"{self.name}: a coordinate overflows float64 (beyond ±1.8e308)",
-                argument=self.name,
-                hint="scale the input down; coordinates must fit in float64",
-            )
-        if not (np.ldexp(u, self.k) == c).all():
-            raise OverflowGeometryError(
-                f"{self.name}: the polygon underflows float64 (coordinates below 2**-1022 "
-                "would be rounded to multiples of 2**-1074)",
-                argument=self.name,
-                hint="scale the input up; coordinates must be float64 normals",
-            )
-        return u
+        """(coordinates (N, 2), ring offsets, polygon offsets); a point or segment is one
+        polygon of one ring of 1 or 2 vertices. Closing repeats may stay (the core drops
+        them) and the rings may run either way (the core orients them)."""
+        if self.flat:
+            c = np.ascontiguousarray(self.op.flat, np.float64)
+            return c, np.array([0, len(c)], np.int64), np.array([0, 1], np.int64)
+        r = self.op.rings
+        return r.coords, r.ring_offsets, r.polygon_offsets
 
     def pieces(self, decomposition: str = "hertel-mehlhorn") -> Ragged:
-        """The convex pieces in the caller's units (a point or segment: none needed)."""
+        """The convex pieces (a point or segment needs none)."""
         if self._pieces is None:
             if self.flat:
                 self._pieces = Ragged(np.empty((0, 2)), np.zeros(1, np.int64))
             else:
-                with _boundary(self.name, "decomposing the polygon"):
-                    R = _pieces(self.op, decomposition)
-                self._pieces = Ragged(
-                    np.ldexp(np.asarray(R.coords, np.float64), -self.k), R.offsets
-                )
+                self._pieces = _pieces(self.op, decomposition)
         return self._pieces
 
 
@@ -774,14 +678,12 @@ def minkowski_sum_general(
 
 
 class _Wrapped(_Prepared):
-    """An operand already built (its scale is the caller's: k = 0)."""
+    """An operand already built."""
 
     def __init__(self, op: _Operand) -> None:
         self.op = op
-        self.k = 0
         self.flat = op.flat is not None
         self.name = op.name
-        self._rings = None
         self._pieces = None
 
 
@@ -1139,6 +1041,21 @@ def _on_line(ln, lines, side, cr) -> Any:
     return _from_exact_points(ends)
 
 
+def _to_float(v: Fraction) -> float:
+    """The nearest double to an exact coordinate of a result."""
+    try:
+        f = float(v)
+    except OverflowError:
+        f = math.inf
+    if math.isinf(f):
+        raise OverflowGeometryError(
+            "a, b: the result overflows float64 (a coordinate beyond ±1.8e308)",
+            argument="a, b",
+            hint="scale the input down; the result's coordinates must fit in float64",
+        )
+    return f
+
+
 def _from_exact_points(pts: list) -> Any:
     """Point, LineString or Polygon from exact vertices in convex order (with repeats)."""
     import shapely
@@ -1148,11 +1065,11 @@ def _from_exact_points(pts: list) -> Any:
         if p not in uniq:
             uniq.append(p)
     if len(uniq) == 1:
-        return shapely.Point(float(uniq[0][0]), float(uniq[0][1]))
+        return shapely.Point(_to_float(uniq[0][0]), _to_float(uniq[0][1]))
     from .convex import convex_hull
 
     h = convex_hull([(Fraction(x), Fraction(y)) for x, y in uniq])
-    out = np.array([(float(x), float(y)) for x, y in h.tolist()], dtype=np.float64)
+    out = np.array([(_to_float(x), _to_float(y)) for x, y in h.tolist()], dtype=np.float64)
     if len(out) == 2:
         return shapely.LineString(out)
     return shapely.Polygon(out)
@@ -1224,14 +1141,12 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     >>> mk.cspace_obstacle(sq, [(0, 0), (1, 0), (1, 1), (0, 1)]).tolist()  # not the same
     [[-1, -1], [4, -1], [4, 4], [-1, 4]]
     """
-    k, (A, B) = _operands((a, "a"), (b, "b"))
+    A, B = _operands((a, "a"), (b, "b"))
     if A.flat is not None:
         raise ShapeError(
             "a: the region to erode must have area (got a point or segment)", argument="a"
         )
-    with _boundary("a, b", "computing the erosion"):
-        E = _erode(A, B)
-    return _unscale(E, k, "a, b")
+    return _erode(A, B)
 
 
 def _erode(A: _Operand, B: _Operand) -> Any:

@@ -47,7 +47,6 @@ from .errors import (
     NonFiniteError,
     NoPathError,
     OverflowGeometryError,
-    SelfIntersectionError,
     ShapeError,
 )
 
@@ -165,34 +164,18 @@ def _is_shapely(obj: Any) -> bool:
 
 
 def _triangulate(poly: Any, name: str) -> list[np.ndarray]:
-    """Convex pieces (triangles) of a valid shapely polygon with holes; every triangle
-    vertex is an input vertex, bit for bit (GEOS's constrained Delaunay triangulation);
-    the triangles are checked to tile the polygon (areas sum exactly)."""
-    import shapely
+    """Convex pieces (triangles) of a shapely polygon with holes: the core's exact
+    triangulation (every decision an exact sign, every triangle vertex an input vertex,
+    bit for bit, each triangle counter-clockwise); an invalid polygon raises
+    SelfIntersectionError naming the ring and vertex."""
+    from ._polygon import rings_of, triangulate
 
-    if not poly.is_valid:
-        raise SelfIntersectionError(
-            f"{name}: not a simple polygon ({shapely.is_valid_reason(poly)})",
-            argument=name,
-            hint="fix the ring (it must not cross itself)",
-        )
-    tris = shapely.get_parts(shapely.constrained_delaunay_triangles(poly))
-    pieces = [shapely.get_coordinates(t)[:-1] for t in tris]
+    rings = rings_of(poly)
+    tri = triangulate(rings, name, _SIMPLE_HINT, what="not a simple polygon")
+    return list(rings.coords[tri])
 
-    def area2(ring: np.ndarray) -> Fraction:
-        pts = [(Fraction(x), Fraction(y)) for x, y in ring.tolist()]
-        return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1])))
 
-    total = area2(shapely.get_coordinates(poly.exterior)[:-1]) - sum(
-        area2(shapely.get_coordinates(h)[:-1]) for h in poly.interiors
-    )
-    if sum(area2(p) for p in pieces) != total:  # pragma: no cover - GEOS safeguard
-        raise SelfIntersectionError(
-            f"{name}: the triangulation does not tile the polygon",
-            argument=name,
-            hint="simplify the polygon",
-        )
-    return pieces
+_SIMPLE_HINT = "fix the ring (it must not cross itself)"
 
 
 def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
@@ -623,11 +606,10 @@ class MotionPlanner:
             inner = workspace
         else:
             inner = shapely.Polygon(_ring_coords(workspace))
-        if not inner.is_valid:
-            raise SelfIntersectionError(
-                f"workspace: not a simple polygon ({shapely.is_valid_reason(inner)})",
-                argument="workspace",
-            )
+        if inner.geom_type in ("Polygon", "MultiPolygon") and not inner.is_empty:
+            from ._polygon import check, rings_of
+
+            check(rings_of(inner), "workspace", _SIMPLE_HINT, what="not a simple polygon")
         holes = [inner.exterior] if inner.geom_type == "Polygon" else []
         frame = shapely.Polygon(
             [(f[0], f[1]), (f[2], f[1]), (f[2], f[3]), (f[0], f[3])],

@@ -81,18 +81,53 @@ inline i64 hertel_mehlhorn(const T* p, const i64* ids, i64 ntri, const i64* twin
       prv[h] = 3 * t + (k + 2) % 3;
     }
   }
+  // The order of the merges (a heuristic: any order gives convex pieces). Diagonals with
+  // no reflex end first, then one, then two: a reflex vertex can absorb only so much
+  // turning, better spent where it is needed. And two passes: first only the merges that
+  // leave both ends strictly convex, then those that leave them straight. Over the 609
+  // ESICUP parts (Delaunay-flipped triangles) this gives 13 744 pieces, one pass in
+  // index order 13 867 (GEOS's triangles in index order: 13 722); the L-shape fanned from
+  // its reflex corner gives 2 pieces, not 3.
+  std::vector<i64> order;
   if (merge) {
+    i64 nv = 0;
+    for (i64 h = 0; h < H; ++h) nv = org[h] + 1 > nv ? org[h] + 1 : nv;
+    // reflex polygon vertices: a boundary edge in and out whose turn is to the right
+    // (where the boundary passes a vertex more than once, it counts as reflex)
+    std::vector<i64> bin(nv, -1), bout(nv, -1);
+    std::vector<std::uint8_t> reflex(nv, 0);
     for (i64 h = 0; h < H; ++h) {
+      if (twin[h] >= 0) continue;
+      i64 u = org[h], v = org[nxt[h]];
+      if (bout[u] != -1) reflex[u] = 1;
+      bout[u] = v;
+      if (bin[v] != -1) reflex[v] = 1;
+      bin[v] = u;
+    }
+    for (i64 v = 0; v < nv; ++v)
+      if (bin[v] >= 0 && bout[v] >= 0 && !reflex[v]) reflex[v] = turn(p, bin[v], v, bout[v]) < 0;
+    for (int want = 0; want <= 2; ++want)
+      for (i64 h = 0; h < H; ++h)
+        if (twin[h] > h && reflex[org[h]] + reflex[org[twin[h]]] == want) order.push_back(h);
+  }
+  for (int pass = merge ? 0 : 2; pass < 2; ++pass) {
+    const bool strict = pass == 0;
+    for (i64 h : order) {
       i64 t = twin[h];
-      if (t < h) continue;  // boundary edge, or the pair was seen from the other side
+      if (t < h || !alive[h]) continue;  // boundary edge, seen from the other side, gone
       i64 fa = find(parent.data(), h / 3);
       i64 fb = find(parent.data(), t / 3);
       if (fa == fb) continue;
       i64 pn = prv[h], nn = nxt[h], tp = prv[t], tn = nxt[t];
       i64 u = org[h], v = org[t];
       // at u the merged face runs origin(pn) -> u -> dest(tn) = origin(next(tn))
-      if (!convex_at(p, org[pn], u, org[nxt[tn]])) continue;
-      if (!convex_at(p, org[tp], v, org[nxt[nn]])) continue;
+      if (strict) {
+        if (turn(p, org[pn], u, org[nxt[tn]]) <= 0) continue;
+        if (turn(p, org[tp], v, org[nxt[nn]]) <= 0) continue;
+      } else {
+        if (!convex_at(p, org[pn], u, org[nxt[tn]])) continue;
+        if (!convex_at(p, org[tp], v, org[nxt[nn]])) continue;
+      }
       nxt[pn] = tn;
       prv[tn] = pn;
       nxt[tp] = nn;

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 
 namespace mk {
@@ -42,8 +43,25 @@ enum Status : int {
   UNHANDLED = 7,        // input of a kind this fast path does not read (list path)
   SHAPE = 8,            // not an (n, 2) sequence of pairs
   EMPTY = 9,            // no vertices
-  INTERNAL = 10,        // an internal consistency check failed (a bug: please report it)
-  RESOURCE = 11,        // the work would exceed a limit (crossings, segments, pieces)
+  INVALID_POLYGON = 10,  // not a valid polygon: the reason (enum Invalid) says why
+  INTERNAL = 11,         // an internal consistency check failed (a bug: please report it)
+  RESOURCE = 12,         // the work would exceed a limit (crossings, segments, pieces)
+};
+
+// Why a polygon is invalid (Status INVALID_POLYGON), with the ring and the vertex that
+// starts the offending edge (minkowski2d._polygon turns these into messages).
+enum Invalid : int {
+  RING_FEW_VERTICES = 1,  // a ring has fewer than 3 distinct vertices
+  RING_NO_AREA = 2,       // all vertices of a ring lie on one line
+  RING_SPIKE = 3,         // a ring doubles back on itself at a vertex
+  RING_CROSSES = 4,       // two edges of one ring cross
+  RING_OVERLAPS = 5,      // two edges of one ring share a segment
+  RING_TOUCHES = 6,       // two non-consecutive edges of one ring share a point
+  RINGS_CROSS = 7,        // two rings of one polygon cross (also through a shared point)
+  RINGS_OVERLAP = 8,      // two rings of one polygon share a segment
+  HOLE_OUTSIDE = 9,       // a hole does not lie inside the shell
+  HOLE_IN_HOLE = 10,      // a hole lies inside another hole
+  POLYGONS_OVERLAP = 11,  // two polygons of a collection overlap (checked on request)
 };
 
 constexpr double EPS = 1.1102230246251565e-16;                 // 2^-53
@@ -246,6 +264,129 @@ inline int cross_sign(i64 a0x, i64 a0y, i64 a1x, i64 a1y, i64 b0x, i64 b0y, i64 
   i128 l = (i128)(a1x - a0x) * (i128)(b1y - b0y);
   i128 r = (i128)(a1y - a0y) * (i128)(b1x - b0x);
   return (l > r) - (l < r);
+}
+
+// ------------------------------------------------------------------------------------
+// The in-circle test (degree 4): used only to improve a triangulation (Delaunay flips),
+// never to decide validity. Exact for all finite doubles.
+
+namespace detail {
+
+// Products of four finite doubles are m * 2^e with e in [-4296, 3884] and m < 2^212.
+constexpr int ACC4_EMIN = -4296;
+constexpr int ACC4_WORDS = 134;  // 8576 bits: 4296 + 3884 + 212 + carry room
+
+struct Acc4 {
+  u64 w[ACC4_WORDS];
+  int lo = ACC4_WORDS, hi = -1;
+  Acc4() { std::memset(w, 0, sizeof w); }
+  void add(const u64 v[4], int e) {
+    int pos = e - ACC4_EMIN;
+    int word = pos >> 6, sh = pos & 63;
+    u64 parts[5];
+    parts[0] = v[0] << sh;
+    for (int t = 1; t < 4; ++t) parts[t] = (v[t] << sh) | (sh ? v[t - 1] >> (64 - sh) : 0);
+    parts[4] = sh ? v[3] >> (64 - sh) : 0;
+    u64 carry = 0;
+    int k = word;
+    for (int t = 0; t < 5; ++t, ++k) {
+      u128 s = (u128)w[k] + parts[t] + carry;
+      w[k] = (u64)s;
+      carry = (u64)(s >> 64);
+    }
+    while (carry) {
+      u128 s = (u128)w[k] + carry;
+      w[k] = (u64)s;
+      carry = (u64)(s >> 64);
+      ++k;
+    }
+    if (word < lo) lo = word;
+    if (k - 1 > hi) hi = k - 1;
+  }
+};
+
+inline int compare4(const Acc4& P, const Acc4& N) {
+  int top = P.hi > N.hi ? P.hi : N.hi;
+  int bot = P.lo < N.lo ? P.lo : N.lo;
+  for (int k = top; k >= bot && k >= 0; --k) {
+    if (P.w[k] != N.w[k]) return P.w[k] > N.w[k] ? 1 : -1;
+  }
+  return 0;
+}
+
+// P or N += (a b c d), exactly
+inline void add_product4(Acc4& P, Acc4& N, double a, double b, double c, double d, bool negate) {
+  if (a == 0.0 || b == 0.0 || c == 0.0 || d == 0.0) return;
+  Unpacked ua = unpack(a), ub = unpack(b), uc = unpack(c), ud = unpack(d);
+  u128 m1 = (u128)ua.m * ub.m, m2 = (u128)uc.m * ud.m;  // each < 2^106
+  u64 l1 = (u64)m1, h1 = (u64)(m1 >> 64), l2 = (u64)m2, h2 = (u64)(m2 >> 64);
+  u128 p0 = (u128)l1 * l2, p1 = (u128)l1 * h2, p2 = (u128)h1 * l2, p3 = (u128)h1 * h2;
+  u64 v[4];
+  v[0] = (u64)p0;
+  u128 t = (p0 >> 64) + (u64)p1 + (u64)p2;
+  v[1] = (u64)t;
+  t = (t >> 64) + (p1 >> 64) + (p2 >> 64) + (u64)p3;
+  v[2] = (u64)t;
+  t = (t >> 64) + (p3 >> 64);
+  v[3] = (u64)t;
+  bool neg = ((ua.neg != ub.neg) != (uc.neg != ud.neg)) != negate;
+  (neg ? N : P).add(v, ua.e + ub.e + uc.e + ud.e);
+}
+
+}  // namespace detail
+
+// Exact sign of the in-circle determinant: > 0 when d lies inside the circle through a, b,
+// c (counter-clockwise), < 0 outside, 0 on it. The 4 x 4 determinant with rows
+// (x, y, x^2 + y^2, 1) expanded into its 48 monomials of degree 4, each exact.
+inline int incircle_exact(double ax, double ay, double bx, double by, double cx, double cy,
+                          double dx, double dy) {
+  const double X[4] = {ax, bx, cx, dx}, Y[4] = {ay, by, cy, dy};
+  detail::Acc4 P, N;
+  static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  static const bool odd[6] = {false, true, true, false, false, true};
+  for (int r = 0; r < 4; ++r) {  // Laplace along the column of ones: sign (-1)^(r + 3)
+    int rows[3], q = 0;
+    for (int i = 0; i < 4; ++i)
+      if (i != r) rows[q++] = i;
+    const bool neg_r = ((r + 3) & 1) != 0;
+    for (int s = 0; s < 6; ++s) {
+      const int i = rows[perm[s][0]], j = rows[perm[s][1]], k = rows[perm[s][2]];
+      const bool neg = neg_r != odd[s];
+      // x_i y_j (x_k^2 + y_k^2)
+      detail::add_product4(P, N, X[i], Y[j], X[k], X[k], neg);
+      detail::add_product4(P, N, X[i], Y[j], Y[k], Y[k], neg);
+    }
+  }
+  return detail::compare4(P, N);
+}
+
+// Filtered in-circle sign (Shewchuk's incircle, stage A), exact for all finite doubles.
+// The filter's bound assumes no underflow or overflow: it is trusted only when every
+// coordinate difference is 0 or within [2^-255, 2^255] (then every product of up to four
+// of them is a normal double); otherwise the exact expansion decides.
+inline int incircle(double ax, double ay, double bx, double by, double cx, double cy,
+                    double dx, double dy) {
+  const double adx = ax - dx, bdx = bx - dx, cdx = cx - dx;
+  const double ady = ay - dy, bdy = by - dy, cdy = cy - dy;
+  bool safe = true;
+  for (double v : {adx, bdx, cdx, ady, bdy, cdy}) {
+    double a = std::fabs(v);
+    safe = safe && (a == 0.0 || (a >= 0x1p-255 && a <= 0x1p255));  // false for NaN
+  }
+  if (safe) {
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, alift = adx * adx + ady * ady;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy, blift = bdx * bdx + bdy * bdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady, clift = cdx * cdx + cdy * cdy;
+    const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) +
+                       clift * (adxbdy - bdxady);
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                             (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                             (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+    const double bound = (10.0 + 96.0 * EPS) * EPS * permanent;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
+  }
+  return incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
 }
 
 // ------------------------------------------------------------------------------------

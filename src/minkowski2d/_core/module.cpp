@@ -513,6 +513,7 @@ void bind_decompose(nb::module_& m);  // decompose.cpp
 void bind_planning(nb::module_& m);   // planning.cpp
 void bind_overlay(nb::module_& m);    // overlay.cpp
 void bind_general(nb::module_& m);    // general.cpp
+void bind_polygon(nb::module_& m);    // polygon.cpp
 void bind_union(nb::module_& m);      // union.cpp
 
 }  // namespace mk_bind
@@ -577,5 +578,6 @@ NB_MODULE(_ext, m) {
   bind_decompose(m);
   bind_overlay(m);
   bind_general(m);
+  bind_polygon(m);
   bind_union(m);
 }

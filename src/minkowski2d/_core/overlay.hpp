@@ -1275,6 +1275,7 @@ class Overlay {
   std::vector<std::vector<i64>> rings_;       // arrangement vertices, inside on the left
   std::vector<std::vector<i64>> ring_edges_;  // boundary pieces of each ring
   std::vector<char> ring_ccw_;
+  std::vector<char> junction_;  // arrangement vertex where several boundary rings meet
 
   void trace(Rings& out) {
     out.clear();
@@ -1314,6 +1315,8 @@ class Overlay {
       }
       return best >= 0 ? outs[best] : outs[k1 - 1];
     };
+    junction_.assign(nv, 0);
+    for (i64 v = 0; v < nv; ++v) junction_[v] = lo[v + 1] - lo[v] > 1;
     std::vector<char> used(nb, 0);
     std::vector<i64> walk_v, walk_e, pos(nv, -1);
     for (i64 b0 = 0; b0 < nb; ++b0) {
@@ -1353,7 +1356,10 @@ class Overlay {
     i64 lowest = -1, lowest_i = 0;
     for (i64 i = 0; i < n; ++i) {
       // rv[i] sits between re[i - 1] (in) and re[i] (out)
-      if (bturn(bnd_[re[(i + n - 1) % n]], bnd_[re[i]]) == 0) continue;  // straight on
+      // straight on: dropped, unless other boundary edges meet there (a ring touching
+      // this one at a point of its edge): the vertex stays in both, so rounding cannot
+      // move the edge off the touching vertex
+      if (!junction_[rv[i]] && bturn(bnd_[re[(i + n - 1) % n]], bnd_[re[i]]) == 0) continue;
       if (lowest < 0 || rank_[rv[i]] < rank_[lowest]) {
         lowest = rv[i];
         lowest_i = i;
