@@ -514,6 +514,7 @@ void bind_planning(nb::module_& m);   // planning.cpp
 void bind_overlay(nb::module_& m);    // overlay.cpp
 void bind_general(nb::module_& m);    // general.cpp
 void bind_polygon(nb::module_& m);    // polygon.cpp
+void bind_offset(nb::module_& m);     // offset.cpp
 
 }  // namespace mk_bind
 
@@ -578,4 +579,5 @@ NB_MODULE(_ext, m) {
   bind_overlay(m);
   bind_general(m);
   bind_polygon(m);
+  bind_offset(m);
 }

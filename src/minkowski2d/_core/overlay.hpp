@@ -369,10 +369,15 @@ struct Rings {
   std::vector<double> xy;
   std::vector<i64> ring_off{0}, poly_off{0};
   int status = OK;
+  // with want_lines: line[k] is the supporting line of the edge from vertex k to the next
+  // one of its ring (when collinear edges were merged, the line of the first)
+  bool want_lines = false;
+  std::vector<i64> line;
   void clear() {
     xy.clear();
     ring_off.assign(1, 0);
     poly_off.assign(1, 0);
+    line.clear();
     status = OK;
   }
 };
@@ -971,12 +976,14 @@ class Overlay {
   // ---- rings
   std::vector<std::vector<i64>> rings_;       // arrangement vertices, inside on the left
   std::vector<std::vector<i64>> ring_edges_;  // boundary pieces of each ring
+  std::vector<std::vector<i64>> ring_lines_;  // line of the edge leaving each kept vertex
   std::vector<char> ring_ccw_;
 
   void trace(Rings& out) {
     out.clear();
     rings_.clear();
     ring_edges_.clear();
+    ring_lines_.clear();
     ring_ccw_.clear();
     const i64 nv = (i64)av_.size(), nb = (i64)bnd_.size();
     std::vector<i64> lo(nv + 1, 0);
@@ -1045,7 +1052,7 @@ class Overlay {
   // a simple loop: drop collinear vertices, record its orientation
   void add_ring(const std::vector<i64>& rv, const std::vector<i64>& re) {
     const i64 n = (i64)rv.size();
-    std::vector<i64> kv;
+    std::vector<i64> kv, kl;
     kv.reserve(n);
     i64 lowest = -1, lowest_i = 0;
     for (i64 i = 0; i < n; ++i) {
@@ -1056,11 +1063,13 @@ class Overlay {
         lowest_i = i;
       }
       kv.push_back(rv[i]);
+      kl.push_back(bnd_[re[i]].line);
     }
     if (kv.size() < 3) return;  // cannot happen for a boundary with area
     // the turn at the lowest vertex is strict and its sign is the orientation
     int t = bturn(bnd_[re[(lowest_i + n - 1) % n]], bnd_[re[lowest_i]]);
     rings_.push_back(std::move(kv));
+    ring_lines_.push_back(std::move(kl));
     ring_edges_.push_back(re);
     ring_ccw_.push_back(t > 0);
   }
@@ -1144,6 +1153,7 @@ class Overlay {
         xy(r[(start[k] + i) % m], x, y);
         out.xy.push_back(x);
         out.xy.push_back(y);
+        if (out.want_lines) out.line.push_back(ring_lines_[k][(start[k] + i) % m]);
       }
       out.ring_off.push_back((i64)out.xy.size() / 2);
     };
