@@ -164,20 +164,33 @@ def _check_shapely(geom: Any, name: str) -> tuple[Any, bool]:
 
 
 def _geom_input(geom: Any, unite: bool) -> _Input:
+    """The rings of a Polygon / MultiPolygon as flat arrays (closing repeats kept)."""
     import shapely
 
-    parts = shapely.get_parts(geom)
-    _, xy, (ring_off, poly_off) = shapely.to_ragged_array(parts)
-    hole = np.ones(len(ring_off) - 1, np.int64)
-    hole[poly_off[:-1]] = 0
-    return _Input(np.ascontiguousarray(xy, np.float64), ring_off.astype(np.int64), hole, unite, 0.0)
+    if geom.geom_type == "Polygon" and shapely.lib.get_num_interior_rings(geom) == 0:
+        xy = shapely.get_coordinates(geom)
+        return _Input(xy, np.array([0, len(xy)], np.int64), _ZERO1, unite, 0.0)
+    else:
+        parts = shapely.get_parts(geom)
+        rings, part = shapely.get_rings(parts, return_index=True)
+        xy = shapely.get_coordinates(rings)
+        ring_off = np.zeros(len(rings) + 1, np.int64)
+        np.cumsum(shapely.get_num_coordinates(rings), out=ring_off[1:])
+        hole = np.ones(len(rings), np.int64)
+        hole[np.r_[0, np.flatnonzero(np.diff(part)) + 1]] = 0  # each part's first ring
+    return _Input(np.ascontiguousarray(xy, np.float64), ring_off, hole, unite, 0.0)
+
+
+#: constant arrays of the single-polygon call
+_ZERO1 = np.zeros(1, np.int64)
+_GEOM1 = np.array([0, 1], np.int64)
 
 
 def _one_ring(data: np.ndarray, delta: float) -> _Input:
     return _Input(
         np.ascontiguousarray(data, np.float64),
         np.array([0, len(data)], np.int64),
-        np.zeros(1, np.int64),
+        _ZERO1,
         False,
         delta,
     )
@@ -197,6 +210,10 @@ def _read(obj: Any, name: str) -> _Input:
     of one or two vertices for a point or a segment."""
     import shapely
 
+    if type(obj) is shapely.Polygon and not obj.is_empty and shapely.lib.is_valid(obj):
+        # the common case: GEOS's validity verdict (the validation of checked_polygonal),
+        # then the rings; the core orients them exactly
+        return _geom_input(obj, False)
     if type(obj).__module__.startswith("shapely"):
         if obj.geom_type in ("Point", "LineString", "MultiPoint"):
             obj = shapely.get_coordinates(obj)
@@ -269,20 +286,22 @@ def _run(
     if len(inputs) == 1:
         a = inputs[0]
         xy, ro, hole = a.xy, a.ring_off, a.hole
-        go = np.array([0, len(ro) - 1], np.int64)
+        go = _GEOM1 if len(ro) == 2 else np.array([0, len(ro) - 1], np.int64)
     else:
         xy = np.concatenate([a.xy for a in inputs]) if inputs else np.empty((0, 2))
         nv = np.cumsum([0] + [len(a.xy) for a in inputs[:-1]])
         ro = np.concatenate([[0]] + [a.ring_off[1:] + s for a, s in zip(inputs, nv)])
         hole = np.concatenate([a.hole for a in inputs]) if inputs else np.empty(0, np.int64)
         go = np.cumsum([0] + [len(a.ring_off) - 1 for a in inputs])
-    unite = np.array([a.unite for a in inputs], np.int64)
-    delta = np.array([a.delta + extra_delta for a in inputs], np.float64)
+    unite = np.fromiter((a.unite for a in inputs), np.int64, len(inputs))
+    delta = np.fromiter((a.delta + extra_delta for a in inputs), np.float64, len(inputs))
+    if xy.dtype != np.float64 or not xy.flags.c_contiguous:
+        xy = np.ascontiguousarray(xy, np.float64)
     return _ext.offset_rings(
-        np.ascontiguousarray(xy, np.float64),
-        np.ascontiguousarray(ro, np.int64),
-        np.ascontiguousarray(hole, np.int64),
-        np.ascontiguousarray(go, np.int64),
+        xy,
+        ro,
+        hole,
+        go,
         unite,
         delta,
         d,
@@ -404,6 +423,18 @@ def _map(polygon: Any, fn_args: tuple) -> Any:
 
 
 def _check_options(distance, tolerance, approx, join, miter_limit):
+    if (
+        type(distance) is float
+        and (tolerance is None or type(tolerance) is float)
+        and approx in APPROX
+        and join in JOINS
+        and type(approx) is str
+        and type(join) is str
+        and math.isfinite(distance)
+        and (tolerance is None or (math.isfinite(tolerance) and tolerance > 0))
+        and (type(miter_limit) in (float, int) and math.isfinite(miter_limit) and miter_limit >= 1)
+    ):
+        return distance, tolerance, float(miter_limit)  # the common case, already checked
     d = _finite_float(distance, "distance")
     _options.choice(approx, "approx", APPROX)
     _options.choice(join, "join", JOINS)

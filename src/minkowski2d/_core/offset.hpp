@@ -237,8 +237,16 @@ class Curve {
       vertex(v, j, s);
     }
     cs_[n] = chain_.size();
+    if (s.join == ROUND) certify(v, s);
+    if (!certified) return;
+    trim(v, s);
     // the curve: chains joined by the moved edges
     for (std::size_t j = 0; j < n; ++j) {
+      if (trim_[j]) {  // a trimmed detour: the crossing of the moved edges
+        pts.push_back(tx_[j]);
+        lab.push_back(base + (i64)j);
+        continue;
+      }
       std::size_t k0 = cs_[j], k1 = cs_[j + 1];
       i64 vl = fan_[j] ? -1 - (base + (i64)j) : DETOUR;
       for (std::size_t k = k0; k < k1; ++k) {
@@ -246,7 +254,6 @@ class Curve {
         lab.push_back(k + 1 < k1 ? vl : base + (i64)j);  // the last: moved edge j
       }
     }
-    if (s.join == ROUND) certify(v, s);
   }
 
  private:
@@ -254,6 +261,95 @@ class Curve {
   std::vector<std::size_t> cs_;  // chain of vertex j: chain_[cs_[j] .. cs_[j + 1])
   std::vector<char> fan_;        // 1: a fan, 0: a detour (F, V, S)
   std::vector<Pt> chain_;
+  std::vector<char> trim_;       // 1: the detour of vertex j is trimmed at tx_[j]
+  std::vector<Pt> tx_;
+
+  // p inside or on the convex counter-clockwise quadrilateral (a, b, c, d)
+  static bool in_quad(Pt a, Pt b, Pt c, Pt d, Pt p) {
+    return orient(a, b, p) >= 0 && orient(b, c, p) >= 0 && orient(c, d, p) >= 0 &&
+           orient(d, a, p) >= 0;
+  }
+  // p within t of the segment ab (exactly)
+  static bool near_segment(Pt a, Pt b, Pt p, double t) {
+    return dot_sign(a, p, a, b) >= 0 && dot_sign(b, p, b, a) >= 0 &&
+           line_dist_cmp(a, b, p, t) <= 0;
+  }
+
+  // Trimming. At a detour of a reflex vertex V the moved edges S_in -> F_in and
+  // S_out -> F_out usually cross at X; the loop X, F_in, V, S_out (the kite) is then cut
+  // off. As chains, raw curve - trimmed curve = the kite (+ slivers, below), so the winding
+  // number drops by one inside the kite: nothing changes where it was >= 2 there. With
+  // beta the turn at V: if beta <= 90 degrees, the kite lies in both pieces
+  // Q_in = (P, S_in, F_in, V) and Q_out = (V, S_out, F_out, N) (convex: F_in in Q_out and
+  // S_out in Q_in, checked), so it was >= 2. If beta > 90 degrees, a kite point x with
+  // winding 1 lies in Q_in (or Q_out) only, outside P, so its nearest feature would be
+  // the interior of edge in, on the far side of the line VX; but there
+  // s < h tan(beta / 2) (s back from V along in, h from in's line), and the foot of x on
+  // out's line lies at s |cos beta| + h sin beta <= t_cov tan(beta / 2) <= |V X|
+  // cos-projected <= that of X' (beyond both lines), which is checked to lie on the edge
+  // out: so x is closer to out (at |s sin beta + h cos beta| < h), a contradiction. Such
+  // points are not within t_cov of P: removing them keeps the guarantee (the same for
+  // out, and for a shrink with the complement of P). X is rounded to a double X' on or beyond both moved edges (right of both lines),
+  // so the sliver between S_in, X, F_out and S_in, X', F_out (a clockwise loop) is
+  // *added*: the region only grows there, and X' is checked to lie within t_up of both
+  // edges, so the sliver (the hull of points within t_up of them) stays within t_up.
+  // Trims on the two ends of one edge must keep their order along it.
+  void trim(const std::vector<Pt>& v, const Setup& s) {
+    const std::size_t n = v.size();
+    trim_.assign(n, 0);
+    tx_.resize(n);
+    if (n < 3) return;
+    auto first = [&](std::size_t j) { return chain_[cs_[j]]; };
+    auto last = [&](std::size_t j) { return chain_[cs_[j + 1] - 1]; };
+    for (std::size_t j = 0; j < n; ++j) {
+      if (fan_[j]) continue;
+      const std::size_t jp = (j + n - 1) % n, jn = (j + 1) % n;
+      const Pt V = v[j], P = v[jp], N = v[jn];
+      if (orient(P, V, N) >= 0) continue;  // a detour at a convex vertex: not trimmed
+      const Pt Sin = last(jp), Fin = chain_[cs_[j]], Sout = chain_[cs_[j] + 2], Fout = first(jn);
+      int o1 = orient(Sin, Fin, Sout), o2 = orient(Sin, Fin, Fout);
+      int o3 = orient(Sout, Fout, Sin), o4 = orient(Sout, Fout, Fin);
+      if (o1 * o2 >= 0 || o3 * o4 >= 0) continue;  // no proper crossing
+      const bool obtuse = dot_sign(P, V, V, N) < 0;
+      if (!obtuse && (!in_quad(V, Sout, Fout, N, Fin) || !in_quad(P, Sin, Fin, V, Sout)))
+        continue;
+      // X in extended precision, rounded (a guess; every check below is exact)
+      using LD = long double;
+      LD ux = (LD)Fin.x - Sin.x, uy = (LD)Fin.y - Sin.y, wx = (LD)Fout.x - Sout.x,
+         wy = (LD)Fout.y - Sout.y;
+      LD t = (((LD)Sout.x - Sin.x) * wy - ((LD)Sout.y - Sin.y) * wx) / (ux * wy - uy * wx);
+      Pt X0{(double)(Sin.x + t * ux), (double)(Sin.y + t * uy)};
+      if (!(X0.x - X0.x == 0) || !(X0.y - X0.y == 0)) continue;
+      // X': a few units in the last place outwards along the bisector of the normals,
+      // where the filtered orientations decide (on the lines they would go exact)
+      bool found = false;
+      Pt X = X0;
+      const double bx = ey_[jp] + ey_[j], by = -ex_[jp] - ex_[j];  // n_in + n_out
+      double step = std::max(std::fabs(X0.x), std::fabs(X0.y)) * 0x1p-50;
+      for (int k = 0; k < 40 && !found; ++k, step *= 2) {
+        Pt c = k == 0 ? X0 : Pt{X0.x + step * bx, X0.y + step * by};  // X0 first: often exact
+        if (orient(Sin, Fin, c) <= 0 && orient(Sout, Fout, c) <= 0) {
+          X = c;
+          found = true;
+        }
+      }
+      if (!found) continue;
+      if (s.join == ROUND && (!near_segment(P, V, X, s.t_up) || !near_segment(V, N, X, s.t_up)))
+        continue;
+      if (obtuse && (dot_sign(P, X, P, V) < 0 || dot_sign(V, X, V, P) < 0 ||
+                     dot_sign(V, X, V, N) < 0 || dot_sign(N, X, N, V) < 0))
+        continue;
+      trim_[j] = 1;
+      tx_[j] = X;
+    }
+    // order along each edge with trims at both ends
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t j = (i + 1) % n;
+      if (!trim_[i] || !trim_[j]) continue;
+      const Pt S = chain_[cs_[i] + 2], F = chain_[cs_[j]];  // the raw moved edge i
+      if (dot_sign(tx_[i], tx_[j], S, F) <= 0) trim_[i] = trim_[j] = 0;
+    }
+  }
 
   static Pt at(Pt V, double R, double nx, double ny, double exx, double eyy, double a) {
     double c = std::cos(a), sn = std::sin(a);
@@ -300,20 +396,23 @@ class Curve {
       }
     }
     // a detour: F past V's normal on in's side, S before it on out's (at a convex vertex
-    // of a turn too small for a fan, F must end up at or ahead of S around V)
-    double rho = s.join == ROUND ? s.rho : s.r;
-    double f = s.join == ROUND ? s.mc : 0.0;
-    for (int it = 0;; ++it) {
-      Pt F{V.x + rho * nix + f * eix, V.y + rho * niy + f * eiy};
-      Pt S{V.x + rho * nox - f * eox, V.y + rho * noy - f * eoy};
-      if (!convex || s.join != ROUND || orient(V, S, F) >= 0 || it == 60) {
-        chain_.push_back(F);
-        chain_.push_back(V);
-        chain_.push_back(S);
-        break;
+    // of a turn too small for a fan, F must end up at or ahead of S around V). The points
+    // on the normals, rounded, are kept when they already lie on the right side (axis-
+    // parallel edges: exactly on it); else they are pushed along the edge by mc.
+    const double rho = s.join == ROUND ? s.rho : s.r;
+    const Pt P = v[ji], N = v[(j + 1) % n];
+    Pt F{V.x + rho * nix, V.y + rho * niy}, S{V.x + rho * nox, V.y + rho * noy};
+    if (s.join == ROUND) {
+      if (dot_sign(V, F, P, V) < 0) F = Pt{F.x + s.mc * eix, F.y + s.mc * eiy};
+      if (dot_sign(V, S, V, N) > 0) S = Pt{S.x - s.mc * eox, S.y - s.mc * eoy};
+      for (double f = 2 * s.mc; convex && orient(V, S, F) < 0 && f < 0x1p1000; f *= 2) {
+        F = Pt{V.x + rho * nix + f * eix, V.y + rho * niy + f * eiy};
+        S = Pt{V.x + rho * nox - f * eox, V.y + rho * noy - f * eoy};
       }
-      f *= 2;
     }
+    chain_.push_back(F);
+    chain_.push_back(V);
+    chain_.push_back(S);
     fan_[j] = 0;
   }
 
@@ -471,7 +570,7 @@ class Offsetter {
     s.r = std::ldexp(r0, -e0);
     double dl = delta > 0 ? up(std::ldexp(delta, -e0)) : 0.0;
     if (e0 > 0) dl = up(dl + 0x1p-1073);  // scaling down may round subnormals
-    const double m = 0x1p-52;
+    const double m = 0x1p-52;  // the overlay's rounding of a crossing: below sqrt(2)/2 ulp
     const double mu = up(m + dl);
     s.mc = up(std::ldexp(s.r, -45) + 0x1p-50);
     const double least = up(2 * mu + 4 * s.mc);
@@ -512,12 +611,9 @@ class Offsetter {
       s.rho = s.r;
     }
     // the curves
-    ov::Geo g;
-    std::vector<ov::EdgeIn> in;
-    std::vector<i64> line_label;
     const int w = grow ? 1 : -1;
     i64 base = 0;
-    Curve cv;
+    std::size_t nc = 0;
     std::vector<Pt> sv;
     for (auto& v0 : rings) {
       if (v0.empty()) continue;
@@ -534,12 +630,13 @@ class Offsetter {
       drop_straight(sv);
       if (!grow && sv.size() < 3) continue;
       if (!grow) std::reverse(sv.begin(), sv.end());
+      if (curves_.size() <= nc) curves_.emplace_back();
+      Curve& cv = curves_[nc++];
       cv.build(sv, s, base);
       if (!cv.certified) {
         res.code = UNCERTIFIED;
         return;
       }
-      add_curve(g, cv.pts, cv.lab, w, in, line_label);
       if (want_labels) {
         for (const Pt& q : sv) {
           res.used_xy.push_back(q.x);
@@ -549,18 +646,113 @@ class Offsetter {
       }
       base += (i64)sv.size();
     }
-    ov::Overlay o(g);
-    o.run(in, ov::UNION, res.rings);
+    // one simple curve: it is the boundary (no overlay)
+    if (nc == 1 && simple(curves_[0].pts)) {
+      direct(curves_[0], grow, want_labels, res);
+    } else {
+      ov::Geo g;
+      std::vector<ov::EdgeIn> in;
+      std::vector<i64> line_label;
+      for (std::size_t k = 0; k < nc; ++k) add_curve(g, curves_[k].pts, curves_[k].lab, w, in, line_label);
+      ov::Overlay o(g);
+      o.run(in, ov::UNION, res.rings);
+      if (want_labels) {
+        res.labels.resize(res.rings.line.size());
+        for (std::size_t k = 0; k < res.rings.line.size(); ++k)
+          res.labels[k] = line_label[res.rings.line[k]];
+      }
+    }
+    finish(e0, want_labels, res);
+  }
+
+ private:
+  std::vector<Curve> curves_;
+
+  // Is the closed polyline p simple (no two segments meet but consecutive ones at their
+  // common end, no segment of length zero)? Exact: boxes, then orientations.
+  static bool simple(const std::vector<Pt>& p) {
+    const i64 n = (i64)p.size();
+    if (n < 3) return false;
+    std::vector<double> x0(n), x1(n), y0(n), y1(n);
+    for (i64 i = 0; i < n; ++i) {
+      const Pt &a = p[i], &b = p[(i + 1) % n];
+      if (a.x == b.x && a.y == b.y) return false;
+      x0[i] = std::min(a.x, b.x);
+      x1[i] = std::max(a.x, b.x);
+      y0[i] = std::min(a.y, b.y);
+      y1[i] = std::max(a.y, b.y);
+    }
+    bool ok = true;
+    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 i, i64 j) {
+      if (!ok) return;
+      const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
+      if (j == i + 1 || (i == 0 && j == n - 1)) {
+        // consecutive: they must not fold back onto each other
+        const Pt &u = j == i + 1 ? a : c, &m = j == i + 1 ? b : d, &z = j == i + 1 ? d : b;
+        if (orient(u, m, z) == 0 && dot_sign(u, m, m, z) < 0) ok = false;
+        return;
+      }
+      int o1 = orient(a, b, c), o2 = orient(a, b, d);
+      if (o1 * o2 > 0) return;
+      int o3 = orient(c, d, a), o4 = orient(c, d, b);
+      if (o3 * o4 > 0) return;
+      if (o1 == 0 && o2 == 0) {
+        // collinear: they meet when their extents along the line overlap
+        auto key = [&](const Pt& q) { return a.x != b.x ? q.x : q.y; };
+        double s0 = std::min(key(a), key(b)), s1 = std::max(key(a), key(b));
+        double t0 = std::min(key(c), key(d)), t1 = std::max(key(c), key(d));
+        if (t0 > s1 || s0 > t1) return;
+      }
+      ok = false;
+    });
+    return ok;
+  }
+
+  // The region of one simple curve: its inside when it turns the way the rule selects
+  // (counter-clockwise for a grow, clockwise for a shrink, whose curve has weight -1),
+  // else nothing. Straight vertices dropped, from the least (x, y) vertex.
+  static void direct(const Curve& cv, bool grow, bool want_labels, Result& res) {
+    std::vector<Pt> p = cv.pts;
+    std::vector<i64> lab = cv.lab;
+    const std::size_t n = p.size();
+    std::size_t lo = 0;
+    for (std::size_t i = 1; i < n; ++i)
+      if (p[i].x < p[lo].x || (p[i].x == p[lo].x && p[i].y < p[lo].y)) lo = i;
+    int o = orient(p[(lo + n - 1) % n], p[lo], p[(lo + 1) % n]);  // nonzero: extreme
+    ov::Rings& R = res.rings;
+    R.clear();
+    if ((o > 0) != grow) return;  // winding -1 inside (a shrink that erases everything)
+    if (!grow) {
+      std::reverse(p.begin(), p.end());
+      std::vector<i64> rl(n);
+      for (std::size_t i = 0; i < n; ++i) rl[i] = lab[(2 * n - 2 - i) % n];
+      lab.swap(rl);
+      lo = n - 1 - lo;
+    }
+    std::vector<Pt> q;
+    std::vector<i64> ql;
+    for (std::size_t k = 0; k < n; ++k) {  // lo is extreme (never straight): q starts there
+      std::size_t i = (lo + k) % n;
+      if (orient(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) == 0) continue;  // straight on
+      q.push_back(p[i]);
+      ql.push_back(lab[i]);
+    }
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      R.xy.push_back(q[k].x);
+      R.xy.push_back(q[k].y);
+      if (want_labels) res.labels.push_back(ql[k]);
+    }
+    R.ring_off.push_back((i64)q.size());
+    R.poly_off.push_back(1);
+  }
+
+  // status, scale back, range
+  static void finish(int e0, bool want_labels, Result& res) {
     if (res.rings.status != OK) {
       res.status = res.rings.status;
       return;
     }
-    if (want_labels) {
-      res.labels.resize(res.rings.line.size());
-      for (std::size_t k = 0; k < res.rings.line.size(); ++k)
-        res.labels[k] = line_label[res.rings.line[k]];
-      return;  // scaled
-    }
+    if (want_labels) return;  // scaled
     double top = 0;
     for (double& c : res.rings.xy) {
       c = std::ldexp(c, e0);
