@@ -210,10 +210,14 @@ def _read(obj: Any, name: str) -> _Input:
     of one or two vertices for a point or a segment."""
     import shapely
 
-    if type(obj) is shapely.Polygon and not obj.is_empty and shapely.lib.is_valid(obj):
-        # the common case: GEOS's validity verdict (the validation of checked_polygonal),
-        # then the rings; the core orients them exactly
-        return _geom_input(obj, False)
+    if type(obj) is shapely.Polygon and not obj.is_empty:
+        # the common case: GEOS's validity verdict (the validation of checked_polygonal,
+        # whose own float overflows are GEOS's business), then the rings; the core
+        # orients them exactly
+        with np.errstate(all="ignore"):
+            valid = shapely.lib.is_valid(obj)
+        if valid:
+            return _geom_input(obj, False)
     if type(obj).__module__.startswith("shapely"):
         if obj.geom_type in ("Point", "LineString", "MultiPoint"):
             obj = shapely.get_coordinates(obj)
