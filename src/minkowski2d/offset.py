@@ -183,6 +183,7 @@ def _geom_input(geom: Any, unite: bool) -> _Input:
 
 #: constant arrays of the single-polygon call
 _ZERO1 = np.zeros(1, np.int64)
+_ZEROF1 = np.zeros(1, np.float64)
 _GEOM1 = np.array([0, 1], np.int64)
 
 
@@ -297,8 +298,11 @@ def _run(
         ro = np.concatenate([[0]] + [a.ring_off[1:] + s for a, s in zip(inputs, nv)])
         hole = np.concatenate([a.hole for a in inputs]) if inputs else np.empty(0, np.int64)
         go = np.cumsum([0] + [len(a.ring_off) - 1 for a in inputs])
-    unite = np.fromiter((a.unite for a in inputs), np.int64, len(inputs))
-    delta = np.fromiter((a.delta + extra_delta for a in inputs), np.float64, len(inputs))
+    if len(inputs) == 1 and not inputs[0].unite and inputs[0].delta + extra_delta == 0:
+        unite, delta = _ZERO1, _ZEROF1
+    else:
+        unite = np.fromiter((a.unite for a in inputs), np.int64, len(inputs))
+        delta = np.fromiter((a.delta + extra_delta for a in inputs), np.float64, len(inputs))
     if xy.dtype != np.float64 or not xy.flags.c_contiguous:
         xy = np.ascontiguousarray(xy, np.float64)
     return _ext.offset_rings(
@@ -362,9 +366,13 @@ def _shapes(res: tuple, distance: Any, tolerance: Any) -> list:
     """Shapely results, one per polygonal set of the call (errors raised in order)."""
     import shapely
 
-    xy, ro, po, go, status, code, least, _eps, _extra = res
-    for g in range(len(go) - 1):
-        _raise_for(int(code[g]), int(status[g]), float(least[g]), distance, tolerance)
+    xy, ro, po, go, info, _extra = res
+    if info[:, :2].any():
+        for g in range(len(go) - 1):
+            st, cd, least = info[g, :3].tolist()
+            _raise_for(int(cd), int(st), least, distance, tolerance)
+    if len(go) == 2 and len(po) == 2:  # one polygon of one ring or more
+        return [shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))[0]]
     polys = (
         shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
         if len(po) > 1
@@ -553,6 +561,10 @@ def offset(
     'POLYGON ((-1 -1, 3 -1, 3 3, -1 3, -1 -1))'
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
+    if type(polygon).__name__ == "Polygon" and type(polygon).__module__.startswith("shapely"):
+        # one shapely polygon: the shortest way through
+        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim)
+        return _shapes(res, distance, tolerance)[0]
     return _map(polygon, (d, tol, approx, join, lim, distance, tolerance))
 
 
@@ -1174,10 +1186,11 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
     for rel in _TRACE_TOLERANCES:
         res = _run([inp], d, rel * abs(d), "outer", "round", 2.0,
                    _distance_error(distance, d), labels=True)  # fmt: skip
-        xy, ro, po, _go, status, code, least, _eps, extra = res
-        if int(code[0]) == _ext.OFFSET_TOLERANCE and best is not None:
+        xy, ro, po, _go, info, extra = res
+        status, code, least = int(info[0, 0]), int(info[0, 1]), float(info[0, 2])
+        if code == _ext.OFFSET_TOLERANCE and best is not None:
             break  # finer than float64 allows at this magnitude: keep the best so far
-        _raise_for(int(code[0]), int(status[0]), float(least[0]), distance, rel * abs(d))
+        _raise_for(code, status, least, distance, rel * abs(d))
         if len(po) == 1:
             return OffsetArcs([], d, polygon)
         lab, uxy, uoff, e0 = extra
@@ -1199,7 +1212,7 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
         parts, holes = len(po) - 1, (len(ro) - 1) - (len(po) - 1)
         # the exact set lies inside the traced outer polygon, within a band of width
         # rel·r along its boundary, and it has the traced polygon's topology
-        slack = max(VERIFY_RESOLUTION * r, math.ldexp(float(least[0]), -e0))
+        slack = max(VERIFY_RESOLUTION * r, math.ldexp(least, -e0))
         band = length * rel * r
         slack_a = slack * length
         sign = 1.0 if d > 0 else -1.0

@@ -23,8 +23,8 @@ namespace {
 // offset_rings(xy (N, 2), ring_off (R + 1,), ring_hole (R,), geom_off (G + 1,), unite (G,),
 //              delta (G,), distance, tolerance (NaN: default), default_rel, outer, join,
 //              miter_limit, labels=False, threads=1)
-//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), status (G,),
-//       code (G,), least (G,), eps (G,), extra)
+//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), info (G, 4):
+//       status, code, least tolerance, tolerance used; extra)
 // Geometry g is made of the rings ring_off[geom_off[g]] ..; its result is the polygons
 // poly_off[geom_off[g]] .. of the output. With labels (one geometry only), extra is
 // (label per output row, the rings offset (scaled, offset side right) as xy and offsets,
@@ -87,10 +87,7 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   i64* oro = alloc<i64>(nrings + 1);
   i64* opo = alloc<i64>(npolys + 1);
   i64* ogo = alloc<i64>(ng + 1);
-  i64* ost = alloc<i64>(ng);
-  i64* ocd = alloc<i64>(ng);
-  double* ole = alloc<double>(ng);
-  double* oep = alloc<double>(ng);
+  double* oin = alloc<double>(4 * ng);  // status, code, least, eps
   std::vector<i64> lab;
   i64 row = 0, ring = 0, poly = 0;
   oro[0] = 0;
@@ -98,10 +95,10 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   ogo[0] = 0;
   for (i64 g = 0; g < ng; ++g) {
     const mk::off::Result& r = res[(std::size_t)g];
-    ost[g] = r.status;
-    ocd[g] = r.code;
-    ole[g] = r.least;
-    oep[g] = r.eps;
+    oin[4 * g] = r.status;
+    oin[4 * g + 1] = r.code;
+    oin[4 * g + 2] = r.least;
+    oin[4 * g + 3] = r.eps;
     const auto& R = r.rings;
     const i64 rr = (i64)R.ring_off.size() - 1;
     for (i64 k = 0; k < rr; ++k) {
@@ -128,8 +125,7 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   }
   return nb::make_tuple(owned(oxy, (std::size_t)rows, 2), owned(oro, (std::size_t)nrings + 1, 0),
                         owned(opo, (std::size_t)npolys + 1, 0), owned(ogo, (std::size_t)ng + 1, 0),
-                        owned(ost, (std::size_t)ng, 0), owned(ocd, (std::size_t)ng, 0),
-                        owned(ole, (std::size_t)ng, 0), owned(oep, (std::size_t)ng, 0), extra);
+                        owned(oin, (std::size_t)ng, 4), extra);
 }
 
 }  // namespace

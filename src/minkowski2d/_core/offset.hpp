@@ -130,6 +130,18 @@ inline int dist_cmp(Pt v, Pt p, double t) {
   });
 }
 
+// x * 2^k as ldexp does (exact unless the result is subnormal), by at most two
+// multiplications with normal powers of two: cheaper than ldexp in a loop
+struct Pow2 {
+  double a = 1, b = 1;
+  explicit Pow2(int k) {
+    int k1 = k / 2, k2 = k - k1;
+    a = std::ldexp(1.0, k1);
+    b = std::ldexp(1.0, k2);
+  }
+  double operator()(double x) const { return x * a * b; }
+};
+
 // rounded up / down (one step past the rounded value: an upper / lower bound)
 inline double up(double x) { return std::nextafter(x, INFINITY); }
 inline double down(double x) { return std::nextafter(x, -INFINITY); }
@@ -615,6 +627,7 @@ class Offsetter {
     i64 base = 0;
     std::size_t nc = 0;
     std::vector<Pt> sv;
+    const Pow2 down_scale(-e0);
     for (auto& v0 : rings) {
       if (v0.empty()) continue;
       if (!grow && v0.size() < 3) continue;  // no area: nothing to shrink
@@ -622,7 +635,7 @@ class Offsetter {
       // then vertices may coincide or become collinear: cleaned again)
       sv.clear();
       for (const Pt& q : v0) {
-        Pt t{std::ldexp(q.x, -e0), std::ldexp(q.y, -e0)};
+        Pt t{down_scale(q.x), down_scale(q.y)};
         if (sv.empty() || sv.back().x != t.x || sv.back().y != t.y) sv.push_back(t);
       }
       while (sv.size() > 1 && sv.front().x == sv.back().x && sv.front().y == sv.back().y)
@@ -754,8 +767,9 @@ class Offsetter {
     }
     if (want_labels) return;  // scaled
     double top = 0;
+    const Pow2 up_scale(e0);
     for (double& c : res.rings.xy) {
-      c = std::ldexp(c, e0);
+      c = up_scale(c);
       top = std::max(top, std::fabs(c));
     }
     if (!(top <= 1.79769313486231570815e308)) res.code = OVERFLOWS;
