@@ -909,24 +909,43 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r, sign) -> np.ndarray:
     return J
 
 
-def _nearest(pts, A0, U, L, VS, VE, chunk: int = 512) -> tuple[np.ndarray, np.ndarray]:
+def _nearest(pts, A0, U, L, VS, VE, reach: float, chunk: int = 64) -> tuple:
     """Label of the nearest feature of the polygon (edge ``e`` >= 0 for its interior,
-    ``-1 - v`` for vertex ``v``) and the distance, for each point (float64, brute force
-    in chunks: a construction for the repairs and the verification, not a decision of
-    the offset itself)."""
-    lab = np.empty(len(pts), np.int64)
-    dist = np.empty(len(pts))
-    for s in range(0, len(pts), chunk):
+    ``-1 - v`` for vertex ``v``) and the distance, for each point (float64: a
+    construction for the repairs and the verification, not a decision of the offset).
+    The points come in boundary order, so consecutive ones are close: a chunk of them
+    looks at the edges whose boxes come within ``R`` of the chunk's box (``R`` from
+    ``reach`` up, doubled until every point has found an edge within ``R``: no other
+    edge can then be nearer)."""
+    n = len(pts)
+    lab = np.empty(n, np.int64)
+    dist = np.empty(n)
+    A1 = A0 + L[:, None] * U
+    lo, hi = np.minimum(A0, A1), np.maximum(A0, A1)
+    span = float(np.ptp(np.concatenate([pts, A0]), axis=0).max()) + 1.0
+    for s in range(0, n, chunk):
         P = pts[s : s + chunk]
-        w = P[:, None, :] - A0[None, :, :]
-        t = np.clip((w * U[None]).sum(-1), 0.0, L[None])
-        q = w - t[..., None] * U[None]
-        d2 = (q * q).sum(-1)
-        e = d2.argmin(axis=1)
-        rows = np.arange(len(P))
-        te = t[rows, e]
-        lab[s : s + chunk] = np.where(te <= 0, -1 - VS[e], np.where(te >= L[e], -1 - VE[e], e))
-        dist[s : s + chunk] = np.sqrt(d2[rows, e])
+        p0, p1 = P.min(axis=0), P.max(axis=0)
+        R = max(reach, 1e-300)
+        while True:
+            cand = np.flatnonzero(((hi >= p0 - R) & (lo <= p1 + R)).all(axis=1))
+            if len(cand):
+                w = P[:, None, :] - A0[None, cand, :]
+                t = np.clip((w * U[None, cand]).sum(-1), 0.0, L[None, cand])
+                q = w - t[..., None] * U[None, cand]
+                d2 = (q * q).sum(-1)
+                k = d2.argmin(axis=1)
+                rows = np.arange(len(P))
+                best = np.sqrt(d2[rows, k])
+                if best.max() <= R or len(cand) == len(L) or R > span:
+                    e = cand[k]
+                    te = t[rows, k]
+                    lab[s : s + chunk] = np.where(
+                        te <= 0, -1 - VS[e], np.where(te >= L[e], -1 - VE[e], e)
+                    )
+                    dist[s : s + chunk] = best
+                    break
+            R *= 2
     return lab, dist
 
 
@@ -1014,7 +1033,7 @@ def _trace(
 
     def nearest(pts):
         """Label of the nearest feature (edge interior or vertex) and its distance."""
-        return _nearest(pts, A0, U, L, VS, VE)
+        return _nearest(pts, A0, U, L, VS, VE, 2 * r)
 
     polys = []
     for item in items:
