@@ -106,6 +106,9 @@ class _Input(NamedTuple):
 
 def _is_many(x: Any) -> bool:
     """True when ``x`` is a collection of polygons rather than one polygon."""
+    if type(x) in (list, tuple) and x and type(x[0]) in (list, tuple) and len(x[0]) == 2:
+        if not isinstance(x[0][0], (list, tuple, np.ndarray)):
+            return False  # a list of points: one polygon
     name = type(x).__name__
     if name in ("GeoSeries", "GeometryArray"):
         return True
@@ -185,6 +188,7 @@ def _geom_input(geom: Any, unite: bool) -> _Input:
 _ZERO1 = np.zeros(1, np.int64)
 _ZEROF1 = np.zeros(1, np.float64)
 _GEOM1 = np.array([0, 1], np.int64)
+_POLYGON = 3  # shapely.GeometryType.POLYGON
 
 
 def _one_ring(data: np.ndarray, delta: float) -> _Input:
@@ -244,12 +248,13 @@ def _read(obj: Any, name: str) -> _Input:
     if len(data) > 1 and (data[0] == data[-1]).all():
         data = data[:-1]
     if len(data) >= 3:
-        # the common case: a valid ring with area (the float shoelace only picks this
-        # path; the core decides the orientation exactly)
-        x, y = data[:, 0], data[:, 1]
+        # the common case: a valid ring (GEOS's verdict, as checked_polygonal gives it; a
+        # ring without area is invalid and goes on below); the core orients it exactly
+        closed = np.concatenate([data, data[:1]])
+        ring = shapely.from_ragged_array(_POLYGON, closed, (np.array([0, len(closed)]), _GEOM1))
         with np.errstate(all="ignore"):
-            area2 = float(x @ np.roll(y, -1) - y @ np.roll(x, -1))
-        if area2 != 0.0 and math.isfinite(area2) and shapely.is_valid(shapely.Polygon(data)):
+            valid = shapely.lib.is_valid(ring[0])
+        if valid:
             return _one_ring(data, delta)
     from .convex import convex_hull
 
@@ -561,9 +566,10 @@ def offset(
     'POLYGON ((-1 -1, 3 -1, 3 3, -1 3, -1 -1))'
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
-    if type(polygon).__name__ == "Polygon" and type(polygon).__module__.startswith("shapely"):
-        # one shapely polygon: the shortest way through
-        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim)
+    if not _is_many(polygon):
+        # one polygon: the shortest way through
+        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim,
+                   _distance_error(distance, d))  # fmt: skip
         return _shapes(res, distance, tolerance)[0]
     return _map(polygon, (d, tol, approx, join, lim, distance, tolerance))
 
