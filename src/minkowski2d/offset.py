@@ -33,10 +33,10 @@ guarantee is stated, as above, as a sandwich between the erosions by ``r`` and `
 The overlay's vertices are exact until its output, where each crossing is rounded to the
 nearest float64; the pieces are certified with a margin of that rounding (below one unit
 in the last place of the result's largest coordinate), so the rounded result keeps the
-guarantee. The least tolerance this allows is about ``2**-44`` times the input's
-magnitude (``max |x|`` and ``r``); a smaller one raises a
-:class:`~minkowski2d.errors.GeometryError`. Fractions and integers beyond 2⁵³ are rounded
-to float64 once, and that rounding is part of the margin.
+guarantee. The least tolerance this allows is about ``2**-43 · r + 2**-46 · max |x|``
+(``docs/offset.md``); a smaller one raises a :class:`~minkowski2d.errors.GeometryError`.
+Fractions and integers beyond 2⁵³ are rounded to float64 once, and that rounding is part
+of the margin.
 
 Examples
 --------
@@ -504,8 +504,8 @@ def offset(
         The largest error ``ε > 0`` (in the input's units) of a round join; unused by
         miter and square joins. Default (None): :data:`DEFAULT_TOLERANCE` ``· |r|`` =
         ``1e-3 · |r|``, or the least tolerance float64 can guarantee at the input's
-        magnitude when that is larger (about ``2**-44 · max(max |x|, r)``). The one-sided
-        guarantee below holds for the tolerance used, given or default.
+        magnitude when that is larger (about ``2**-43 · r + 2**-46 · max |x|``). The
+        one-sided guarantee below holds for the tolerance used, given or default.
     approx : {"outer", "inner"}
         Which side of the true set the result lies on (see Returns).
     join : {"round", "miter", "square"}

@@ -51,6 +51,12 @@
 // tolerance must exceed least = 2 mu + 4 mc. Certification failing anyway is reported
 // (UNCERTIFIED), never returned.
 //
+// Trims and the simple curve. At a reflex vertex the detour F, V, S is usually replaced
+// by one point beyond the crossing of the two moved edges (certified below, Curve::trim).
+// One ring whose trimmed curve is simple (checked exactly) is then the boundary itself:
+// no overlay, nothing rounded. Otherwise the curves go to one exact overlay (rule
+// w >= 1), which nodes them and returns rings with holes.
+//
 // Miter and square joins are polygons by construction (no tolerance): built in float64
 // with the same pieces, not certified.
 #pragma once
