@@ -275,7 +275,7 @@ def test_offset_default_tolerance_keeps_the_guarantee(r):
 
 
 def test_offset_default_tolerance_far_from_the_origin():
-    # 1e-3 * r is below what float64 guarantees at 1e12 (0.0088 since the core certifies its
+    # 1e-3 * r is below what float64 guarantees at 1e12 (0.012 since the core certifies its
     # pieces exactly, docs/offset.md; at 1e9 when GEOS rounded): the default is raised
     far = [(x + 1e12, y) for x, y in L]
     g = mk.offset(far, 0.5)

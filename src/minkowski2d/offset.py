@@ -64,6 +64,7 @@ from .errors import (
     EmptyGeometryError,
     GeometryError,
     OverflowGeometryError,
+    ResourceLimitError,
     ShapeError,
 )
 from .predicates import orient_array
@@ -352,6 +353,12 @@ def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: A
             "float64 may exceed the guaranteed tolerance)",
             argument="result",
             hint="scale the input up by a power of two, and the result down",
+        )
+    if status == _ext.RESOURCE:
+        raise ResourceLimitError(
+            "polygon: the offset's overlay would exceed its work limit",
+            argument="polygon",
+            hint="offset fewer vertices at once, or with a coarser tolerance",
         )
     if code == _ext.OFFSET_OVERFLOWS or status == _ext.OVERFLOW:
         raise OverflowGeometryError(

@@ -40,11 +40,12 @@
 //
 // Rounding. The overlay's output vertices are either curve points (doubles, exact) or
 // crossings of two curve segments, rounded to the nearest double: each moves by at most
-// sqrt(2)/2 ulp of its largest coordinate. The problem is scaled by a power of two so
-// that every coordinate of the result is below 2 in magnitude: a move is then below
-// m = 2^-52, and the margin mu = m + delta (delta: a bound on the error of the input the
-// caller passed, e.g. Fractions rounded to float64) keeps the rounded boundary on its
-// side: for a grow, P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + eps) (outer) and
+// sqrt(2)/2 ulp of its largest coordinate (when rounding made the rings invalid, the
+// overlay re-nodes the rounded rings, at most 4 more times). The problem is scaled by a
+// power of two so that every coordinate of the result is below 2 in magnitude: the
+// moves are then below m = 2^-50 in all, and the margin mu = m + delta (delta: a bound
+// on the error of the input the caller passed, e.g. Fractions rounded to float64) keeps
+// the rounded boundary on its side: for a grow, P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + eps) (outer) and
 // P ⊕ D(r - eps) ⊆ result ⊆ P ⊕ D(r) (inner); for a shrink the same with erosions.
 // The construction aims mc beyond the certified bounds (mc covers its float64 error,
 // about 45 u r + 1.5 u |x| for u = 2^-53; the certificate does not depend on it), so a
@@ -588,7 +589,9 @@ class Offsetter {
     s.r = std::ldexp(r0, -e0);
     double dl = delta > 0 ? up(std::ldexp(delta, -e0)) : 0.0;
     if (e0 > 0) dl = up(dl + 0x1p-1073);  // scaling down may round subnormals
-    const double m = 0x1p-52;  // the overlay's rounding of a crossing: below sqrt(2)/2 ulp
+    // the overlay's rounding of a crossing (below sqrt(2)/2 ulp), up to 5 times when it
+    // re-nodes rounded rings that came out invalid: below 4 ulp
+    const double m = 0x1p-50;
     const double mu = up(m + dl);
     s.mc = up(std::ldexp(s.r, -45) + 0x1p-50);
     const double least = up(2 * mu + 4 * s.mc);
@@ -676,9 +679,12 @@ class Offsetter {
       ov::Overlay o(g);
       o.run(in, ov::UNION, res.rings);
       if (want_labels) {
-        res.labels.resize(res.rings.line.size());
-        for (std::size_t k = 0; k < res.rings.line.size(); ++k)
-          res.labels[k] = line_label[res.rings.line[k]];
+        // the lines of the output edges, unless the overlay had to re-node its rounded
+        // rings (then they are unknown: DETOUR, and offset_arcs labels by distances)
+        const std::size_t nv = res.rings.xy.size() / 2;
+        res.labels.assign(nv, DETOUR);
+        if (res.rings.line.size() == nv)
+          for (std::size_t k = 0; k < nv; ++k) res.labels[k] = line_label[res.rings.line[k]];
       }
     }
     finish(e0, want_labels, res);

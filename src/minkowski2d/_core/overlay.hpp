@@ -1178,18 +1178,24 @@ class Overlay {
 inline void clean_rounded(Rings& r) {
   Rings out;
   out.status = r.status;
+  // the supporting lines follow their vertices (a dropped repeat's zero-length edge goes)
+  const bool lines = r.want_lines && r.line.size() * 2 == r.xy.size();
+  out.want_lines = r.want_lines;
   std::vector<double> x, y;
+  std::vector<i64> ln;
   for (std::size_t p = 0; p + 1 < r.poly_off.size(); ++p) {
     bool ext_kept = false;
     for (i64 k = r.poly_off[p]; k < r.poly_off[p + 1]; ++k) {
       x.clear();
       y.clear();
+      ln.clear();
       const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1], m = r1 - r0;
       for (i64 i = r0; i < r1; ++i) {
         i64 j = i + 1 < r1 ? i + 1 : r0;
         if (m > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) continue;
         x.push_back(r.xy[2 * i]);
         y.push_back(r.xy[2 * i + 1]);
+        if (lines) ln.push_back(r.line[i]);
       }
       if (x.size() < 3) continue;
       // start again at the smallest vertex (x, then y)
@@ -1198,6 +1204,7 @@ inline void clean_rounded(Rings& r) {
         if (x[i] < x[s0] || (x[i] == x[s0] && y[i] < y[s0])) s0 = i;
       std::rotate(x.begin(), x.begin() + s0, x.end());
       std::rotate(y.begin(), y.begin() + s0, y.end());
+      if (lines) std::rotate(ln.begin(), ln.begin() + s0, ln.end());
       bool is_ext = k == r.poly_off[p];
       if (is_ext)
         ext_kept = true;
@@ -1206,6 +1213,7 @@ inline void clean_rounded(Rings& r) {
       for (std::size_t i = 0; i < x.size(); ++i) {
         out.xy.push_back(x[i]);
         out.xy.push_back(y[i]);
+        if (lines) out.line.push_back(ln[i]);
       }
       out.ring_off.push_back((i64)out.xy.size() / 2);
     }
