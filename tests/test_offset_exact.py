@@ -341,15 +341,17 @@ def test_threads_give_the_same_rings():
 
 
 def test_no_geos_overlay_on_the_computing_path(monkeypatch):
-    """union, difference, intersection, buffer, simplify, make_valid, STRtree: none runs
-    while offsetting (validity is still GEOS's is_valid until the core's validator)."""
+    """union, difference, intersection, buffer, simplify, make_valid, STRtree, is_valid:
+    none runs while offsetting (validity is the core's exact check)."""
 
     def refuse(*a, **k):
         raise AssertionError("a GEOS operation ran on the offset's computing path")
 
     for name in ("union_all", "union", "difference", "intersection", "buffer", "simplify",
-                 "unary_union", "STRtree", "polygonize", "node", "make_valid"):  # fmt: skip
+                 "unary_union", "STRtree", "polygonize", "node", "make_valid", "is_valid",
+                 "is_valid_reason", "orient_polygons", "normalize"):  # fmt: skip
         monkeypatch.setattr(shapely, name, refuse)
+    monkeypatch.setattr(shapely.lib, "is_valid", refuse)
     cases = [SLIT, TOUCH_HOLES, COMB, ACUTE, [(0, 0)], [(0, 0), (3, 1)],
              shapely.GeometryCollection([shapely.box(0, 0, 2, 2), shapely.box(1, 1, 3, 3)]),
              shapely.MultiPolygon([shapely.box(0, 0, 2, 2), shapely.box(1, 1, 3, 3)])]  # fmt: skip
@@ -369,3 +371,19 @@ def test_tolerance_floor():
     with pytest.raises(GeometryError) as e:
         mk.offset(far, 1.0, tolerance=2.0**-6)
     assert e.value.argument == "tolerance" and "float64" in str(e.value)
+
+
+def test_tiny_valid_triangle_and_invalid_rings():
+    """Validity is decided exactly: a valid 3e-200 triangle (GEOS called it
+    self-intersecting) offsets; a bow-tie is refused naming its vertex."""
+    T = [(0.0, 0.0), (3e-200, 0.0), (0.0, 3e-200)]
+    for d in (1e-200, -5e-201):
+        for approx in SIDES:
+            P = shapely.Polygon(T)
+            out = mk.offset(T, d, tolerance=1e-2 * abs(d), approx=approx)
+            check_exact(P, d, 1e-2 * abs(d), approx, out)
+    with pytest.raises(mk.errors.SelfIntersectionError) as e:
+        mk.offset([(0, 0), (2, 2), (2, 0), (0, 2)], 1)
+    assert e.value.argument == "polygon" and e.value.vertex is not None
+    with pytest.raises(mk.errors.SelfIntersectionError):
+        mk.offset(shapely.Polygon([(0, 0), (4, 0), (4, 4), (0, 4)], [[(5, 1), (6, 1), (6, 2)]]), 1)

@@ -59,10 +59,10 @@ import numpy as np
 
 from . import _options
 from ._coerce import as_array
-from ._geos import checked_polygonal
 from .errors import (
     EmptyGeometryError,
     GeometryError,
+    NonFiniteError,
     OverflowGeometryError,
     ResourceLimitError,
     ShapeError,
@@ -129,16 +129,51 @@ def _finite_float(v: Any, name: str) -> float:
     return _options.real(v, name)
 
 
-def _check_shapely(geom: Any, name: str) -> tuple[Any, bool]:
-    """The validated polygonal geometry and whether its parts may overlap (then the core
-    unites them exactly before offsetting)."""
+_HINT = "repair it: the boundary must not cross itself, holes must lie inside"
+_NONFINITE_HINT = "remove NaN and inf"
+
+
+def _flat(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Coordinates (closing repeats kept), ring offsets and polygon offsets of shapely
+    Polygons (empty ones dropped)."""
+    import shapely
+
+    if len(geoms) == 1 and shapely.lib.get_num_interior_rings(geoms[0]) == 0:
+        xy = shapely.get_coordinates(geoms[0])
+        return xy, np.array([0, len(xy)], np.int64), _GEOM1
+    rings, part = shapely.get_rings(geoms, return_index=True)
+    xy = shapely.get_coordinates(rings)
+    ring_off = np.zeros(len(rings) + 1, np.int64)
+    np.cumsum(shapely.get_num_coordinates(rings), out=ring_off[1:])
+    starts = np.r_[0, np.flatnonzero(np.diff(part)) + 1]  # each polygon's shell
+    poly_off = np.r_[starts, len(rings)].astype(np.int64)
+    return np.ascontiguousarray(xy, np.float64), ring_off, poly_off
+
+
+def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
+    """Rings checked exactly by the core (``_polygon.check``: simple rings, holes inside,
+    no crossing; no GEOS). Parts of a collection that overlap are united by the core
+    before offsetting (``unite``; for a MultiPolygon, found by the same check)."""
+    from ._polygon import Rings, check, probe
+
+    rings = Rings(xy, ring_off, poly_off)
+    check(rings, name, _HINT, nonfinite_hint=_NONFINITE_HINT)
+    if not unite and len(poly_off) > 2 and probe(rings, disjoint=True)[0]:
+        unite = True  # a MultiPolygon whose valid parts overlap or share edges
+    hole = np.ones(len(ring_off) - 1, np.int64)
+    hole[poly_off[:-1]] = 0
+    return _Input(xy, ring_off, hole, unite, 0.0)
+
+
+def _shapely_input(geom: Any, name: str) -> _Input:
+    """A shapely ring, polygon, multipolygon or collection of them, validated."""
     import shapely
 
     gt = geom.geom_type
     if gt == "LinearRing":
         geom = shapely.Polygon(geom)
         gt = "Polygon"
-    hint = "repair it first, e.g. shapely.make_valid"
+    unite = False
     if gt == "GeometryCollection":
         parts = shapely.get_parts(geom)
         if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
@@ -148,41 +183,19 @@ def _check_shapely(geom: Any, name: str) -> tuple[Any, bool]:
                 hint="pass the polygons only",
             )
         polys = shapely.get_parts(parts)
-        if len(polys) == 0:
-            raise EmptyGeometryError(f"{name}: empty GeometryCollection", argument=name)
-        checked = [checked_polygonal(p, name, hint=hint, nonfinite_hint="remove NaN and inf")
-                   for p in polys]  # fmt: skip
-        return shapely.multipolygons(shapely.get_parts(checked)), len(polys) > 1
-    if gt not in ("Polygon", "MultiPolygon"):
+        unite = len(polys) > 1
+    elif gt in ("Polygon", "MultiPolygon"):
+        polys = shapely.get_parts(geom)
+    else:
         raise ShapeError(
             f"{name}: cannot offset a {gt} here (give a polygon, a ring or an (n, 2) array)",
             argument=name,
             hint="pass the coordinates as an (n, 2) array for a point or a segment",
         )
-    if not geom.is_empty and gt == "MultiPolygon" and not shapely.is_valid(geom):
-        parts = shapely.get_parts(geom)
-        if shapely.is_valid(parts).all():
-            # parts that touch or overlap: the core unites them exactly first
-            return geom, True
-    return checked_polygonal(geom, name, hint=hint, nonfinite_hint="remove NaN and inf"), False
-
-
-def _geom_input(geom: Any, unite: bool) -> _Input:
-    """The rings of a Polygon / MultiPolygon as flat arrays (closing repeats kept)."""
-    import shapely
-
-    if geom.geom_type == "Polygon" and shapely.lib.get_num_interior_rings(geom) == 0:
-        xy = shapely.get_coordinates(geom)
-        return _Input(xy, np.array([0, len(xy)], np.int64), _ZERO1, unite, 0.0)
-    else:
-        parts = shapely.get_parts(geom)
-        rings, part = shapely.get_rings(parts, return_index=True)
-        xy = shapely.get_coordinates(rings)
-        ring_off = np.zeros(len(rings) + 1, np.int64)
-        np.cumsum(shapely.get_num_coordinates(rings), out=ring_off[1:])
-        hole = np.ones(len(rings), np.int64)
-        hole[np.r_[0, np.flatnonzero(np.diff(part)) + 1]] = 0  # each part's first ring
-    return _Input(np.ascontiguousarray(xy, np.float64), ring_off, hole, unite, 0.0)
+    polys = polys[~shapely.is_empty(polys)]
+    if len(polys) == 0:
+        raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
+    return _validated(*_flat(polys), name, unite)
 
 
 #: constant arrays of the single-polygon call
@@ -216,20 +229,11 @@ def _read(obj: Any, name: str) -> _Input:
     of one or two vertices for a point or a segment."""
     import shapely
 
-    if type(obj) is shapely.Polygon and not obj.is_empty:
-        # the common case: GEOS's validity verdict (the validation of checked_polygonal,
-        # whose own float overflows are GEOS's business), then the rings; the core
-        # orients them exactly
-        with np.errstate(all="ignore"):
-            valid = shapely.lib.is_valid(obj)
-        if valid:
-            return _geom_input(obj, False)
     if type(obj).__module__.startswith("shapely"):
         if obj.geom_type in ("Point", "LineString", "MultiPoint"):
             obj = shapely.get_coordinates(obj)
         else:
-            geom, unite = _check_shapely(obj, name)
-            return _geom_input(geom, unite)
+            return _shapely_input(obj, name)
     data, _kind = as_array(obj, name)
     delta = 0.0
     if isinstance(data, list):  # Fractions or huge ints: rounded to float64 once
@@ -248,23 +252,23 @@ def _read(obj: Any, name: str) -> _Input:
     data = np.asarray(data, dtype=np.float64)
     if len(data) > 1 and (data[0] == data[-1]).all():
         data = data[:-1]
+    if not np.isfinite(data).all():
+        raise NonFiniteError(
+            f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
+        )
+    from ._polygon import Invalid, probe, rings_of_array
+
+    rings = rings_of_array(data)
     if len(data) >= 3:
-        # the common case: a valid ring (GEOS's verdict, as checked_polygonal gives it; a
-        # ring without area is invalid and goes on below); the core orients it exactly
-        closed = np.concatenate([data, data[:1]])
-        ring = shapely.from_ragged_array(_POLYGON, closed, (np.array([0, len(closed)]), _GEOM1))
-        with np.errstate(all="ignore"):
-            valid = shapely.lib.is_valid(ring[0])
-        if valid:
-            return _one_ring(data, delta)
+        status, reason = probe(rings)[:2]
+        if status == 0:
+            return _one_ring(data, delta)  # the common case: a valid ring (exact check)
+        if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
+            return _validated(*rings, name, False)  # raises the core's verdict
+    # a point, a segment, or collinear points: a degenerate convex set
     from .convex import convex_hull
 
-    hull = np.asarray(convex_hull(data), dtype=np.float64)
-    if len(hull) <= 2:
-        return _one_ring(hull, delta)
-    geom, unite = _check_shapely(shapely.Polygon(data), name)
-    inp = _geom_input(geom, unite)
-    return inp._replace(delta=delta)
+    return _one_ring(np.asarray(convex_hull(data), dtype=np.float64), delta)
 
 
 # --------------------------------------------------------------------------------------
