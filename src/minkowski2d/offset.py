@@ -151,15 +151,24 @@ def _flat(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
-    """Rings checked exactly by the core (``_polygon.check``: simple rings, holes inside,
-    no crossing; no GEOS). Parts of a collection that overlap are united by the core
-    before offsetting (``unite``; for a MultiPolygon, found by the same check)."""
-    from ._polygon import Rings, check, probe
+    """Rings checked exactly by the core (the check of ``_polygon.check``: simple rings,
+    holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
+    by the core before offsetting (``unite``; for a MultiPolygon, found by the same
+    check)."""
+    from ._core import _ext
 
-    rings = Rings(xy, ring_off, poly_off)
-    check(rings, name, _HINT, nonfinite_hint=_NONFINITE_HINT)
-    if not unite and len(poly_off) > 2 and probe(rings, disjoint=True)[0]:
+    verdict = _ext.check_polygons_f(xy, ring_off, poly_off, False)
+    if verdict[0]:
+        from ._polygon import Rings, problem_error
+
+        raise problem_error(
+            *verdict[:4], Rings(xy, ring_off, poly_off), name, _HINT,
+            nonfinite_hint=_NONFINITE_HINT,
+        )  # fmt: skip
+    if not unite and len(poly_off) > 2 and _ext.check_polygons_f(xy, ring_off, poly_off, True)[0]:
         unite = True  # a MultiPolygon whose valid parts overlap or share edges
+    if len(ring_off) == 2:
+        return _Input(xy, ring_off, _ZERO1, unite, 0.0)
     hole = np.ones(len(ring_off) - 1, np.int64)
     hole[poly_off[:-1]] = 0
     return _Input(xy, ring_off, hole, unite, 0.0)
@@ -184,7 +193,11 @@ def _shapely_input(geom: Any, name: str) -> _Input:
             )
         polys = shapely.get_parts(parts)
         unite = len(polys) > 1
-    elif gt in ("Polygon", "MultiPolygon"):
+    elif gt == "Polygon":
+        if geom.is_empty:
+            raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
+        return _validated(*_flat([geom]), name, False)
+    elif gt == "MultiPolygon":
         polys = shapely.get_parts(geom)
     else:
         raise ShapeError(
@@ -264,7 +277,7 @@ def _read(obj: Any, name: str) -> _Input:
         if status == 0:
             return _one_ring(data, delta)  # the common case: a valid ring (exact check)
         if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
-            return _validated(*rings, name, False)  # raises the core's verdict
+            _validated(*rings, name, False)  # raises the core's verdict
     # a point, a segment, or collinear points: a degenerate convex set
     from .convex import convex_hull
 
