@@ -419,10 +419,15 @@ struct Rings {
   std::vector<double> xy;
   std::vector<i64> ring_off{0}, poly_off{0};
   int status = OK;
+  // with want_lines: line[k] is the supporting line of the edge from vertex k to the next
+  // one of its ring (when collinear edges were merged, the line of the first)
+  bool want_lines = false;
+  std::vector<i64> line;
   void clear() {
     xy.clear();
     ring_off.assign(1, 0);
     poly_off.assign(1, 0);
+    line.clear();
     status = OK;
   }
 };
@@ -1274,6 +1279,7 @@ class Overlay {
   // ---- rings
   std::vector<std::vector<i64>> rings_;       // arrangement vertices, inside on the left
   std::vector<std::vector<i64>> ring_edges_;  // boundary pieces of each ring
+  std::vector<std::vector<i64>> ring_lines_;  // line of the edge leaving each kept vertex
   std::vector<char> ring_ccw_;
   std::vector<char> junction_;  // arrangement vertex where several boundary rings meet
 
@@ -1281,6 +1287,7 @@ class Overlay {
     out.clear();
     rings_.clear();
     ring_edges_.clear();
+    ring_lines_.clear();
     ring_ccw_.clear();
     const i64 nv = (i64)av_.size(), nb = (i64)bnd_.size();
     std::vector<i64> lo(nv + 1, 0);
@@ -1351,7 +1358,7 @@ class Overlay {
   // a simple loop: drop collinear vertices, record its orientation
   void add_ring(const std::vector<i64>& rv, const std::vector<i64>& re) {
     const i64 n = (i64)rv.size();
-    std::vector<i64> kv;
+    std::vector<i64> kv, kl;
     kv.reserve(n);
     i64 lowest = -1, lowest_i = 0;
     for (i64 i = 0; i < n; ++i) {
@@ -1365,11 +1372,13 @@ class Overlay {
         lowest_i = i;
       }
       kv.push_back(rv[i]);
+      kl.push_back(bnd_[re[i]].line);
     }
     if (kv.size() < 3) return;  // cannot happen for a boundary with area
     // the turn at the lowest vertex is strict and its sign is the orientation
     int t = bturn(bnd_[re[(lowest_i + n - 1) % n]], bnd_[re[lowest_i]]);
     rings_.push_back(std::move(kv));
+    ring_lines_.push_back(std::move(kl));
     ring_edges_.push_back(re);
     ring_ccw_.push_back(t > 0);
   }
@@ -1453,6 +1462,7 @@ class Overlay {
         xy(r[(start[k] + i) % m], x, y);
         out.xy.push_back(x);
         out.xy.push_back(y);
+        if (out.want_lines) out.line.push_back(ring_lines_[k][(start[k] + i) % m]);
       }
       out.ring_off.push_back((i64)out.xy.size() / 2);
     };
@@ -1477,18 +1487,24 @@ class Overlay {
 inline void clean_rounded(Rings& r) {
   Rings out;
   out.status = r.status;
+  // the supporting lines follow their vertices (a dropped repeat's zero-length edge goes)
+  const bool lines = r.want_lines && r.line.size() * 2 == r.xy.size();
+  out.want_lines = r.want_lines;
   std::vector<double> x, y;
+  std::vector<i64> ln;
   for (std::size_t p = 0; p + 1 < r.poly_off.size(); ++p) {
     bool ext_kept = false;
     for (i64 k = r.poly_off[p]; k < r.poly_off[p + 1]; ++k) {
       x.clear();
       y.clear();
+      ln.clear();
       const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1], m = r1 - r0;
       for (i64 i = r0; i < r1; ++i) {
         i64 j = i + 1 < r1 ? i + 1 : r0;
         if (m > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) continue;
         x.push_back(r.xy[2 * i]);
         y.push_back(r.xy[2 * i + 1]);
+        if (lines) ln.push_back(r.line[i]);
       }
       if (x.size() < 3) continue;
       // start again at the smallest vertex (x, then y)
@@ -1497,6 +1513,7 @@ inline void clean_rounded(Rings& r) {
         if (x[i] < x[s0] || (x[i] == x[s0] && y[i] < y[s0])) s0 = i;
       std::rotate(x.begin(), x.begin() + s0, x.end());
       std::rotate(y.begin(), y.begin() + s0, y.end());
+      if (lines) std::rotate(ln.begin(), ln.begin() + s0, ln.end());
       bool is_ext = k == r.poly_off[p];
       if (is_ext)
         ext_kept = true;
@@ -1505,6 +1522,7 @@ inline void clean_rounded(Rings& r) {
       for (std::size_t i = 0; i < x.size(); ++i) {
         out.xy.push_back(x[i]);
         out.xy.push_back(y[i]);
+        if (lines) out.line.push_back(ln[i]);
       }
       out.ring_off.push_back((i64)out.xy.size() / 2);
     }
