@@ -25,9 +25,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_general import star  # noqa: E402
 
 import minkowski2d as mk  # noqa: E402
-from minkowski2d import _polygon  # noqa: E402
 from minkowski2d._core import _ext  # noqa: E402
-from minkowski2d._decompose import _twins, decompose  # noqa: E402
+from minkowski2d._engine import polygon as _polygon  # noqa: E402
+from minkowski2d._engine.decompose import _twins, decompose  # noqa: E402
 
 
 def best(f, reps: int = 5) -> float:

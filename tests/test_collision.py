@@ -702,7 +702,7 @@ def test_exact_normalization_matches_the_core(pts):
         except NotConvexError as exc:
             return (type(exc), exc.vertex, str(exc))
 
-    from minkowski2d import _exact
+    from minkowski2d._engine import exact as _exact
 
     def exact_twin(p, name):
         _, idx, split = _exact.normalize_list(p, name)

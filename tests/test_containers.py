@@ -154,7 +154,7 @@ def test_a_general_function_adopts_apply_in_one_call():
     gpd = pytest.importorskip("geopandas", reason="geopandas is not installed (extra 'geo')")
     from functools import partial
 
-    from minkowski2d._containers import apply
+    from minkowski2d._engine.containers import apply
 
     def general_many(As, Bs, *, scale):
         return [shapely.affinity.scale(a, scale, scale) for a in As]

@@ -12,7 +12,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
-from minkowski2d import _dispatch as D
+from minkowski2d._engine import dispatch as D
 from minkowski2d.errors import (
     CoordinateTypeError,
     EmptyGeometryError,

@@ -12,7 +12,7 @@ from hypothesis import HealthCheck, given, settings
 
 import minkowski2d as mk
 from minkowski2d._core import _ext
-from minkowski2d._decompose import _twins
+from minkowski2d._engine.decompose import _twins
 from minkowski2d.errors import SelfIntersectionError
 
 from .test_general import star_ring
@@ -185,7 +185,7 @@ def test_decompose_module_is_numba_free():
     code = (
         "import sys, minkowski2d as mk; "
         "mk.convex_decomposition([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]); "
-        "import minkowski2d._decompose, minkowski2d.predicates; "
+        "import minkowski2d._engine.decompose, minkowski2d.predicates; "
         "assert 'numba' not in sys.modules, 'numba imported'"
     )
     subprocess.run([sys.executable, "-c", code], check=True)

@@ -1,4 +1,4 @@
-"""minkowski2d._dispatch and the compiled core: the routing rules, the status codes, and
+"""minkowski2d._engine.dispatch and the compiled core: the routing rules, the status codes, and
 regression tests for the classes of silent wrong answers the core replaced (issue
 "Compiled exact core"): overflowing float products, Fractions next to floats, ints
 beyond 2**53 next to floats, OverflowError escaping, nan areas. Hypothesis checks that
@@ -17,8 +17,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
-from minkowski2d import _dispatch as D
 from minkowski2d._core import _ext
+from minkowski2d._engine import dispatch as D
 from minkowski2d.errors import GeometryError, NonFiniteError, OverflowGeometryError
 
 from . import oracle

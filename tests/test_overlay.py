@@ -58,7 +58,7 @@ def ulps(p, q):
 def valid(xy, ro, po) -> bool:
     """The core's exact polygon check (polygon.hpp, independent of the overlay's own);
     GEOS's is_valid is wrong near the bottom of the float64 range."""
-    from minkowski2d._polygon import Rings, probe
+    from minkowski2d._engine.polygon import Rings, probe
 
     if len(po) < 2:
         return True

@@ -13,10 +13,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
-from minkowski2d import _polygon
 from minkowski2d._core import _ext
-from minkowski2d._dispatch import Status
-from minkowski2d._polygon import Invalid, Rings
+from minkowski2d._engine import polygon as _polygon
+from minkowski2d._engine.dispatch import Status
+from minkowski2d._engine.polygon import Invalid, Rings
 from minkowski2d.errors import EmptyGeometryError, NonFiniteError, SelfIntersectionError
 
 from . import polygon_oracle as oracle

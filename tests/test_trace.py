@@ -111,14 +111,14 @@ def test_seed_triangle_square_step_by_step():
 
 def test_uses_the_algorithms_own_merge(monkeypatch):
     calls = []
-    real = trace_mod._ext.merge_record_i
+    real = trace_mod.core.merge_record_i
 
     def spy(*args, **kw):
         out = real(*args, **kw)
         calls.append(out[1])
         return out
 
-    monkeypatch.setattr(trace_mod._ext, "merge_record_i", spy)
+    monkeypatch.setattr(trace_mod.core, "merge_record_i", spy)
     t = mk.merge_trace(TRIANGLE, SQUARE)
     assert len(calls) == 1
     names = {-1: "A", 1: "B", 0: "AB"}
@@ -126,7 +126,7 @@ def test_uses_the_algorithms_own_merge(monkeypatch):
 
 
 def test_exact_path_records_the_same_steps():
-    from minkowski2d import _dispatch as D
+    from minkowski2d._engine import dispatch as D
 
     t = mk.merge_trace(TRIANGLE, SQUARE)
     D.FORCE_EXACT = True

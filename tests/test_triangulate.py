@@ -17,10 +17,10 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
-from minkowski2d import _polygon
 from minkowski2d._core import _ext
-from minkowski2d._dispatch import Status
-from minkowski2d._polygon import Invalid
+from minkowski2d._engine import polygon as _polygon
+from minkowski2d._engine.dispatch import Status
+from minkowski2d._engine.polygon import Invalid
 from minkowski2d.errors import SelfIntersectionError
 
 from . import polygon_oracle as oracle
@@ -373,7 +373,7 @@ def test_hertel_mehlhorn_pieces_at_parity_with_geos():
     """Over every ESICUP part, Hertel-Mehlhorn on the exact (Delaunay-flipped) triangles
     gives no more than 1 % more pieces than on GEOS's constrained Delaunay triangles
     (the old path): the number of piece-pair sums of a general sum depends on it."""
-    from minkowski2d._decompose import _twins, decompose
+    from minkowski2d._engine.decompose import _twins, decompose
 
     parts = [p for _, p in esicup_parts()]
     if not parts:

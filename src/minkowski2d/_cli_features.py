@@ -34,7 +34,7 @@ __all__ = ["run_features", "run_collection", "write_collection", "arc_tolerance"
 def _is_general(g: Any, name: str) -> bool:
     import numpy as np
 
-    from ._dispatch import check_convex
+    from ._engine.dispatch import check_convex
 
     if not isinstance(g, np.ndarray):
         return True

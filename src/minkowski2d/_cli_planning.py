@@ -65,7 +65,7 @@ def _xy(text: str, name: str) -> tuple[Any, Any]:
 
 
 def _read_scene(source: str) -> Any:
-    from ._foreign import foreign_errors
+    from ._engine.foreign import foreign_errors
     from .errors import InputFormatError
 
     try:

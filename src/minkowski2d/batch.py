@@ -15,11 +15,11 @@ from typing import Any, SupportsIndex, overload
 
 import numpy as np
 
-from . import _dispatch as D
-from . import _options
-from ._coerce import as_array
-from ._containers import apply, boxed
-from ._core import _ext
+from ._engine import core
+from ._engine import dispatch as D
+from ._engine import options as _options
+from ._engine.coerce import as_array
+from ._engine.containers import apply, boxed, is_many
 from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
     CoordinateTypeError,
@@ -105,7 +105,7 @@ class Ragged:
         if type(polygons) is list or type(polygons) is tuple:
             # lists of (x, y) pairs of Python ints/floats, or of (n, 2) int64/float64
             # arrays: one pass in the core
-            coords, offsets, _, status, member, vertex = _ext.flatten(polygons)
+            coords, offsets, _, status, member, vertex = core.flatten(polygons)
             if status == _OK and len(coords) == offsets[-1]:
                 if not (np.diff(offsets) == 0).any():
                     return cls(coords, offsets)
@@ -438,21 +438,6 @@ def _from_buffers(coords: Any, dtype: str, n: int, offsets: Any) -> Ragged:
     return _from_arrays(c, np.frombuffer(offsets, dtype=np.int64))
 
 
-def _is_many(x: Any) -> bool:
-    """True when ``x`` is a collection of polygons rather than one polygon."""
-    if isinstance(x, Ragged):
-        return True
-    if isinstance(x, np.ndarray):
-        return x.dtype == object and x.ndim == 1 and (len(x) == 0 or not np.isscalar(x[0]))
-    if type(x).__module__.startswith("shapely"):
-        return False
-    if isinstance(x, (list, tuple)):
-        if len(x) == 0:
-            return True
-        return np.ndim(x[0]) == 2 or type(x[0]).__module__.startswith("shapely")
-    return False
-
-
 def _as_ragged(x: Any, name: str) -> Ragged:
     if isinstance(x, Ragged):
         return x
@@ -472,7 +457,7 @@ def as_ragged_pair(
     ``RA.coords[a_lo[q]:a_hi[q]]`` with ``RB.coords[b_lo[q]:b_hi[q]]``; ``names`` are the
     argument names used in error messages (``"As"``/``"a"``).
     """
-    many_a, many_b = _is_many(As), _is_many(Bs)
+    many_a, many_b = is_many(As), is_many(Bs)
     if not many_a and not many_b:
         raise ShapeError("give a collection of polygons for As or Bs (or use minkowski_sum)")
     RA = _as_ragged(As, "As") if many_a else Ragged.from_list([As], "a")
@@ -575,13 +560,17 @@ def minkowski_sum_many(
         path = "i"  # the core's first pass checks the range (RANGE: the exact path)
     else:
         ints = [c for c, k in ((ca, ka), (cb, kb)) if k == "i"]
-        path = "f" if all(c.size == 0 or int(np.abs(c).max()) <= 1 << 53 for c in ints) else "py"
+        path = (
+            "f"
+            if all(c.size == 0 or int(np.abs(c).max()) <= core.FLOAT_EXACT_INT for c in ints)
+            else "py"
+        )
     if path == "py":
         return _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi)
     dt = np.int64 if path == "i" else np.float64
     pa = np.ascontiguousarray(ca, dtype=dt)
     pb = pa if cb is ca else np.ascontiguousarray(cb, dtype=dt)
-    fn = _ext.sum_batch_i if path == "i" else _ext.sum_batch_f
+    fn = core.sum_batch_i if path == "i" else core.sum_batch_f
     a_lo = np.ascontiguousarray(a_lo, np.int64)
     a_hi = np.ascontiguousarray(a_hi, np.int64)
     b_lo = np.ascontiguousarray(b_lo, np.int64)

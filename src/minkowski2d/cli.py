@@ -45,7 +45,7 @@ def _is_general(g: Any, name: str) -> bool:
     """True when ``g`` needs the general (non-convex / holes) sum; validates ``g``."""
     import numpy as np
 
-    from ._dispatch import check_convex
+    from ._engine.dispatch import check_convex
 
     if not isinstance(g, np.ndarray):
         return True  # shapely Polygon with holes or MultiPolygon
@@ -195,7 +195,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         return 130
     except Exception as exc:  # the last line of defence: foreign errors from bad data
-        from ._foreign import translate
+        from ._engine.foreign import translate
 
         err = translate(exc, "", "running the command")
         if err is None:

@@ -37,12 +37,14 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _exact, _options
-from ._coerce import INT, as_array
-from ._containers import apply, boxed
-from ._core import _ext
+from ._engine import core
+from ._engine import dispatch as D
+from ._engine import exact as _exact
+from ._engine import options as _options
+from ._engine.coerce import INT, as_array
+from ._engine.containers import apply, boxed
 from ._types import ArrayLike2, PolygonsLike, ProgressLike
-from .errors import NonFiniteError, OverflowGeometryError, ShapeError
+from .errors import OverflowGeometryError, ShapeError
 
 __all__ = [
     "Distance",
@@ -57,13 +59,13 @@ __all__ = [
 ]
 
 _INTERSECTS, _DISTANCE, _PENETRATION, _GJK, _AUTO = (
-    _ext.COLL_INTERSECTS,
-    _ext.COLL_DISTANCE,
-    _ext.COLL_PENETRATION,
-    _ext.COLL_GJK,
-    _ext.COLL_AUTO,
+    core.COLL_INTERSECTS,
+    core.COLL_DISTANCE,
+    core.COLL_PENETRATION,
+    core.COLL_GJK,
+    core.COLL_AUTO,
 )
-_OUT_OF_RANGE = _ext.COLL_OUT_OF_RANGE
+_OUT_OF_RANGE = core.COLL_OUT_OF_RANGE
 _METHODS = {"auto": _AUTO, "sum": _INTERSECTS, "gjk": _GJK}
 
 
@@ -137,11 +139,7 @@ def _kernel_view(data: np.ndarray) -> np.ndarray:
 def _raise(code: int, name: str, vertex: int) -> None:
     if code == -1:  # pragma: no cover - a guard against a bug, never reached in tests
         raise RuntimeError("GJK did not terminate; please report this input")
-    if code == _ext.NONFINITE:
-        raise NonFiniteError(
-            f"{name}: vertex {vertex} has a non-finite coordinate", argument=name, vertex=vertex
-        )
-    raise _exact.not_convex(name, code, vertex)
+    raise D.status_error(code, vertex, name)
 
 
 def _threads(threads: Any) -> int:
@@ -155,7 +153,7 @@ def _pair(a: Any, b: Any, mode: int, hull: bool) -> tuple[bool, np.ndarray]:
     db, kb = _operand(b, "b", hull)
     if isinstance(da, np.ndarray) and isinstance(db, np.ndarray):
         row = np.zeros((1, 7))
-        code, which, v, hit = _ext.coll_single(
+        code, which, v, hit = core.coll_single(
             _kernel_view(da), _kernel_view(db), mode, ka == INT, kb == INT, row
         )
         if code == 0:
@@ -344,7 +342,7 @@ def contains(poly: ArrayLike2, points: Any, *, hull: bool = False) -> Any:
     dq, kq = as_array([points] if one else points, "points")
     if isinstance(dp, np.ndarray) and isinstance(dq, np.ndarray):
         out = np.zeros(len(dq), np.bool_)
-        code, which, v = _ext.coll_contains(
+        code, which, v = core.coll_contains(
             _kernel_view(dp), kp == INT, _kernel_view(dq), kq == INT, out
         )
         if code == 0:
@@ -378,7 +376,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
         inv = np.empty(n if need else 1)
         off = np.ascontiguousarray(R.offsets, dtype=np.int64)
         is_int = R.coords.dtype.kind in "iu"
-        code, q, v = _ext.coll_prep(p, off, is_int, mode, idx, kk, ss, inv, threads)
+        code, q, v = core.coll_prep(p, off, is_int, mode, idx, kk, ss, inv, threads)
         if code == _OUT_OF_RANGE:
             prepared = None
             break
@@ -397,7 +395,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
         return hit.astype(bool), res
     qa = np.arange(P, dtype=np.int64) if many_a else np.zeros(P, np.int64)
     qb = np.arange(P, dtype=np.int64) if many_b else np.zeros(P, np.int64)
-    r = _ext.coll_pairs(*prepared[0], *prepared[1], qa, qb, mode, hit, res, threads)
+    r = core.coll_pairs(*prepared[0], *prepared[1], qa, qb, mode, hit, res, threads)
     if r >= 0:  # pragma: no cover - guard
         _raise(-1, "", 0)
     return hit.astype(bool), res
@@ -570,13 +568,13 @@ def _py_norm(pts: list, name: str) -> tuple[list, int]:
 
 
 def _exact_normalize(pts: list, name: str) -> tuple[list, int]:
-    """Indices and split of the normalized polygon, through ``_ext.normalize_i``.
+    """Indices and split of the normalized polygon, through ``core.normalize_i``.
 
     Normalization reads only coordinate comparisons and orientation signs, which a
     translation and a positive scaling keep: the points become integer offsets from the
     first one in units of the common denominator. Those fit the core's int64 path
     (|x| < 2**62) unless the polygon's extent is beyond it; then the exact Python twin
-    of the core's algorithm (:func:`minkowski2d._exact.normalize_list`) decides."""
+    of the core's algorithm (:func:`minkowski2d._engine.exact.normalize_list`) decides."""
     den = 1
     for p in pts:
         for v in p:
@@ -584,9 +582,9 @@ def _exact_normalize(pts: list, name: str) -> tuple[list, int]:
                 den = math.lcm(den, Fraction(v).denominator)
     x0, y0 = pts[0]
     rel = [(int((x - x0) * den), int((y - y0) * den)) for x, y in pts]
-    lim = _ext.INT_LIMIT
+    lim = core.INT_LIMIT
     if all(-lim < v < lim for p in rel for v in p):
-        idx, split, code, v = _ext.normalize_i(np.array(rel, dtype=np.int64).reshape(-1, 2))
+        idx, split, code, v = core.normalize_i(np.array(rel, dtype=np.int64).reshape(-1, 2))
         if code:
             raise _exact.not_convex(name, int(code), int(v))
         return idx.tolist(), int(split)

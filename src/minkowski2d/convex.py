@@ -1,8 +1,8 @@
 """Convex polygons: normalization, convexity, hull, and the O(n + m) Minkowski sum.
 
 One algorithm, one home: the compiled core (:mod:`minkowski2d._core`, C++) normalizes and
-merges int64 and float64 input; :mod:`minkowski2d._exact` runs the same steps on Python
-ints beyond 2**62 and Fractions. :mod:`minkowski2d._dispatch` chooses; tests check that
+merges int64 and float64 input; :mod:`minkowski2d._engine.exact` runs the same steps on Python
+ints beyond 2**62 and Fractions. :mod:`minkowski2d._engine.dispatch` chooses; tests check that
 both give identical results.
 """
 
@@ -13,9 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from . import _dispatch as D
-from . import _exact
-from ._core import _ext
+from ._engine import core
+from ._engine import dispatch as D
+from ._engine import exact as _exact
 from ._types import ArrayLike2, Polygon
 from .errors import OverflowGeometryError, ShapeError
 
@@ -35,12 +35,12 @@ _NAMES = ("a", "b", "result")
 
 
 def _hull_core(data: np.ndarray, path: str) -> np.ndarray:
-    h = (_ext.hull_i if path == "i" else _ext.hull_f)(data)
+    h = (core.hull_i if path == "i" else core.hull_f)(data)
     return np.ascontiguousarray(data[h])
 
 
 def _normalize_core(data: np.ndarray, path: str, name: str) -> np.ndarray:
-    idx, _, code, v = (_ext.normalize_i if path == "i" else _ext.normalize_f)(data)
+    idx, _, code, v = (core.normalize_i if path == "i" else core.normalize_f)(data)
     if code == D.Status.RANGE:
         return _exact.to_array(
             _exact.normalize_list([tuple(r) for r in data.tolist()], name)[0], "int"
@@ -51,7 +51,7 @@ def _normalize_core(data: np.ndarray, path: str, name: str) -> np.ndarray:
 
 def _sum_core(A: np.ndarray, B: np.ndarray, path: str) -> np.ndarray:
     out = np.empty((len(A) + len(B), 2), A.dtype)
-    k, code, which, v = (_ext.sum_i if path == "i" else _ext.sum_f)(A, B, out)
+    k, code, which, v = (core.sum_i if path == "i" else core.sum_f)(A, B, out)
     if code:
         if code == D.Status.RANGE:  # int64 beyond 2**62: the exact path
             rows = [[tuple(r) for r in X.tolist()] for X in (A, B)]
@@ -274,7 +274,7 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
         and not D.FORCE_EXACT
     ):
         # the tiny path: Python pairs straight into the core, validated as they are read
-        out, code, which, v, _ = _ext.sum_lists(a, b)
+        out, code, which, v, _ = core.sum_lists(a, b)
         if code == 0:
             return out
         if code != _UNHANDLED:

@@ -44,9 +44,10 @@ from typing import Any
 
 import numpy as np
 
-from . import _options
-from ._coerce import as_array
-from ._overlay import geometries
+from ._engine import core
+from ._engine import options as _options
+from ._engine.coerce import as_array
+from ._engine.overlay import geometries
 from .batch import Ragged
 from .errors import (
     EmptyGeometryError,
@@ -118,7 +119,7 @@ class _Operand:
     def geom(self) -> Any:
         """The operand as a shapely Polygon / MultiPolygon (exteriors CCW, holes CW)."""
         if self._geom is None:
-            from ._polygon import oriented, to_geometry
+            from ._engine.polygon import oriented, to_geometry
 
             multi = len(self.rings.polygon_offsets) > 2
             self._geom = to_geometry(oriented(self.rings, self.orientation), multi)
@@ -132,7 +133,7 @@ class _Operand:
         ro = self.rings.ring_offsets
         if len(ro) != 2:
             return None
-        from ._dispatch import check_convex
+        from ._engine.dispatch import check_convex
 
         ring = self.rings.coords[ro[0] : ro[1]]
         if len(ring) > 1 and (ring[0] == ring[-1]).all():
@@ -161,7 +162,7 @@ class _Raw:
         self.name = name
 
 
-_EXACT_INT = 1 << 53
+_EXACT_INT = core.FLOAT_EXACT_INT
 
 
 def _int_coords(arr: np.ndarray, name: str) -> np.ndarray:
@@ -277,11 +278,11 @@ _HINT = "the boundary must not cross itself; holes must lie inside"
 def _checked(rings: Any, name: str, multi: bool) -> _Operand:
     """An operand of validated rings (a polygon whose hole touches its shell twice is
     split into its parts by the exact overlay)."""
-    from ._polygon import check, rings_of
+    from ._engine.polygon import check, rings_of
 
     ck = check(rings, name, _HINT, disjoint=multi)
     if ck.disconnected.any():
-        from ._polygon import oriented
+        from ._engine.polygon import oriented
 
         o = oriented(rings, ck.orientation)
         ro = o.ring_offsets
@@ -293,7 +294,7 @@ def _checked(rings: Any, name: str, multi: bool) -> _Operand:
 
 def _build(raw: _Raw) -> _Operand:
     """Validate a parsed operand exactly (the core's checks; no GEOS)."""
-    from ._polygon import rings_of, rings_of_array
+    from ._engine.polygon import rings_of, rings_of_array
 
     name = raw.name
     if raw.kind == "items":
@@ -308,7 +309,7 @@ def _build(raw: _Raw) -> _Operand:
                     argument=item.name,
                     hint="pass the point or segment as an operand of its own",
                 )
-            from ._polygon import oriented
+            from ._engine.polygon import oriented
 
             o = oriented(op.rings, op.orientation)
             ro = o.ring_offsets
@@ -327,7 +328,7 @@ def _build(raw: _Raw) -> _Operand:
     ring = _float_ring(raw)
     rings = rings_of_array(ring)
     if len(ring):
-        from ._polygon import Invalid, probe
+        from ._engine.polygon import Invalid, probe
 
         status, reason, _, _, orientation, disconnected = probe(rings)
         if status == 0 and not disconnected.any():
@@ -343,7 +344,7 @@ def _build(raw: _Raw) -> _Operand:
 def _union_members_rings(rings: list, name: str) -> Any:
     """The union of validated rings (exteriors CCW, holes CW), by the exact overlay;
     vertices where members cross are rounded to the nearest double."""
-    from ._overlay import overlay
+    from ._engine.overlay import overlay
 
     return overlay(rings, argument=name)
 
@@ -356,7 +357,7 @@ def _operands(*pairs: tuple[Any, str]) -> list[_Operand]:
 def _pieces(op: _Operand, method: str = "hertel-mehlhorn") -> Ragged:
     if op.flat is not None:
         return Ragged(op.flat, np.array([0, len(op.flat)], np.int64))
-    from ._decompose import decompose_rings
+    from ._engine.decompose import decompose_rings
 
     coords, off = decompose_rings(op.rings, op.name, merge=method == "hertel-mehlhorn")
     return Ragged(coords, off)
@@ -511,7 +512,7 @@ def _table(preps: list[_Prepared], with_pieces: list[bool], decomposition: str) 
 
 
 def _status_error(code: int, name_a: str, name_b: str, method: str) -> GeometryError:
-    from ._dispatch import Status
+    from ._engine.dispatch import Status
 
     both = f"{name_a}, {name_b}"
     if code == Status.SHAPE:
@@ -565,14 +566,14 @@ def _sums(
     """``A ⊕ B`` of the operand pairs ``(preps[ia[k]], preps[ib[k]])`` in one compiled
     call (two when the default method finds that a pair needs the convex pieces). With
     ``used``, the method each pair was computed by is appended to it."""
-    from ._core import _ext
+    from ._engine import core
 
     code = _METHOD_CODE[method]
     want = [method == "decomposition"] * len(preps)
 
     def call(sel: np.ndarray, code: int) -> tuple:
         T = _table(preps, want, decomposition)
-        return _ext.general_sums(
+        return core.general_sums(
             *T,
             np.ascontiguousarray(ia[sel], np.int64),
             np.ascontiguousarray(ib[sel], np.int64),
@@ -589,7 +590,7 @@ def _sums(
         if used is not None:
             used.extend(_USED[int(m)] for m in meth)
         return out
-    redo = np.flatnonzero(status == _ext.RANGE)
+    redo = np.flatnonzero(status == core.Status.RANGE)
     if len(redo):
         # the default method found the convolution too large: the pieces, for these pairs
         for k in np.unique(np.concatenate([ia[redo], ib[redo]])):
@@ -600,7 +601,7 @@ def _sums(
         meth[redo] = m2
     if used is not None:
         used.extend(_USED[int(m)] for m in meth)
-    bad = np.flatnonzero(status != _ext.OK)
+    bad = np.flatnonzero(status != core.Status.OK)
     if len(bad):
         k = int(bad[0])
         raise _status_error(int(status[k]), names[k][0], names[k][1], method or "auto")
@@ -619,16 +620,16 @@ def _plain_ring(x: Any) -> np.ndarray | None:
 def _pair_fast(a: np.ndarray, b: np.ndarray, method: str | None) -> Any:
     """``A ⊕ B`` of two plain rings in one compiled call (validated there); None when a
     ring needs the general reader (no area, or a ring that pinches itself)."""
-    from ._core import _ext
-    from ._polygon import Invalid, problem_error, rings_of_array
+    from ._engine import core
+    from ._engine.polygon import Invalid, problem_error, rings_of_array
 
-    status, which, reason, ring, vertex, xy, ro, po = _ext.general_pair(
+    status, which, reason, ring, vertex, xy, ro, po = core.general_pair(
         a, b, _METHOD_CODE[method], MAX_CONVOLUTION_SEGMENTS, MAX_PIECE_PAIRS, MAX_CROSSINGS
     )
-    if status == _ext.OK:
+    if status == core.Status.OK:
         return geometries(xy, ro, po, np.array([0, len(po) - 1], np.int64))[0]
-    if status == _ext.RANGE or (
-        status == _ext.INVALID_POLYGON
+    if status == core.Status.RANGE or (
+        status == core.Status.INVALID_POLYGON
         and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA)
     ):
         return None
@@ -825,7 +826,7 @@ def minkowski_sum_general_many(
     method = _options.choice(method, "method", ("auto", *SUM_METHODS))
     threads = _options.threads(threads)
     progress = _options.progress(progress)
-    from ._containers import apply, boxed
+    from ._engine.containers import apply, boxed
 
     if boxed(As) or boxed(Bs):
         # GeoSeries / GeometryArray / object arrays: the same container kind out
@@ -1215,15 +1216,15 @@ def _erode_general(A: _Operand, B: _Operand) -> Any:
     ``G + B ⊆ bbox(A) ⊆ F``, hence in ``R``, so ``c ∈ R ⊕ (−B)``. The exact overlay
     computes ``G`` minus the convolution of ``R`` and ``−B`` (holes of R that B cannot
     fit into filled first, see minkowski.hpp)."""
-    from ._core import _ext
+    from ._engine import core
 
     preps = [_Wrapped(A), _Wrapped(B)]
     T = _table(preps, [False, False], "hertel-mehlhorn")
-    xy, ro, po, pair_off, status, _ = _ext.general_sums(
+    xy, ro, po, pair_off, status, _ = core.general_sums(
         *T,
         np.array([0], np.int64),
         np.array([1], np.int64),
-        _ext.METHOD_ERODE,
+        core.METHOD_ERODE,
         MAX_CONVOLUTION_SEGMENTS,
         MAX_PIECE_PAIRS,
         MAX_CROSSINGS,

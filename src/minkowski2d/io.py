@@ -444,7 +444,7 @@ def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list
     >>> [p.tolist() for p in parse_cgal_dat("3 0/1 0/1 1/1 0 0 1  2 5 5 6 6")]
     [[[0, 0], [1, 0], [0, 1]], [[5, 5], [6, 6]]]
     """
-    from . import _options
+    from ._engine import options as _options
 
     _options.choice(layout, "layout", ("auto", "polygons", "pwh"))
     matches = list(re.finditer(r"\S+", text))
@@ -799,7 +799,7 @@ def read_dxf(
     within ``1e-9`` of the drawing's size). An outline inside another is a hole of it
     (and one inside a hole is a part again). Open polylines and chains are skipped.
 
-    Arcs are read with a one-sided approximation (see :mod:`minkowski2d._arcs`): the
+    Arcs are read with a one-sided approximation (see :mod:`minkowski2d._engine.arcs`): the
     polygon contains the part (parts grow, holes shrink) and lies within ``tolerance``
     of it. ``tolerance``: the largest error, in drawing units; default (None) ``1e-3``
     times each arc's radius. The exact outline is kept on the feature (``arcs``: one
@@ -824,7 +824,7 @@ def read_dxf(
         ) from None
     tol = None
     if tolerance is not None:
-        from . import _options
+        from ._engine import options as _options
 
         tol = _options.real(tolerance, "arc_tolerance")
         if tol <= 0:
@@ -914,7 +914,7 @@ def _dxf_rings(msp: Any, name: str) -> list[_Ring]:
             s = _ocs(e, where, name)
             c, r = e.dxf.center, float(e.dxf.radius)
             if r > 0:
-                from ._arcs import circle_ring
+                from ._engine.arcs import circle_ring
 
                 rows = circle_ring(s * float(c[0]), float(c[1]), r)
                 rings.append(_Ring(_finite_rows(rows, where, name), props))
@@ -931,7 +931,7 @@ def _dxf_rings(msp: Any, name: str) -> list[_Ring]:
             x0, y0 = c[0] + r * math.cos(a0), c[1] + r * math.sin(a0)
             x1, y1 = c[0] + r * math.cos(a1), c[1] + r * math.sin(a1)
             if sweep >= 2 * math.pi:  # a closed arc: a circle
-                from ._arcs import circle_ring
+                from ._engine.arcs import circle_ring
 
                 rings.append(_Ring(circle_ring(s * float(c[0]), float(c[1]), r), props))
                 continue
@@ -1002,7 +1002,7 @@ def _dxf_parts(rings: list[_Ring], name: str, tol: float | None) -> list[Feature
     one feature per part."""
     import shapely
 
-    from ._arcs import approximate, ring_area
+    from ._engine.arcs import approximate, ring_area
 
     areas = [ring_area(r.rows) for r in rings]
     # a coarse polygon per ring for the nesting test: its vertices and arc midpoints
@@ -1043,7 +1043,7 @@ def _dxf_parts(rings: list[_Ring], name: str, tol: float | None) -> list[Feature
 def _ring_polygon(r: _Ring, area: float, outer: bool, tol: float | None, name: str) -> Any:
     """The ring as a polygon containing the part: the region is on the left of a
     counter-clockwise outline and on the right of a counter-clockwise hole."""
-    from ._arcs import approximate
+    from ._engine.arcs import approximate
 
     region_left = (area > 0) == outer
     where = f"{name}: {r.props.get('entity')} {r.props.get('handle')}"

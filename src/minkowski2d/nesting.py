@@ -33,8 +33,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _options
-from ._coerce import as_array
+from ._engine import options as _options
+from ._engine.coerce import as_array
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -468,12 +468,12 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
 
     import shapely
 
-    from ._core import _ext
+    from ._engine import core
 
     del nfp  # the core finds these placements from the piece sums alone
     RA = convex_decomposition(a)
     RB = convex_decomposition(b)
-    lines, off, points = _ext.degenerate_pieces(
+    lines, off, points = core.degenerate_pieces(
         np.ascontiguousarray(RA.coords, np.float64),
         np.asarray(RA.offsets, np.int64),
         np.ascontiguousarray(RB.coords, np.float64),
@@ -571,7 +571,7 @@ def read_esicup(path: Any) -> dict[str, Any]:
     """
     import shapely
 
-    from ._foreign import foreign_errors
+    from ._engine.foreign import foreign_errors
 
     name = str(path)
     try:

@@ -57,8 +57,9 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _options
-from ._coerce import as_array
+from ._engine import options as _options
+from ._engine.coerce import as_array
+from ._engine.containers import is_many
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -105,26 +106,6 @@ class _Input(NamedTuple):
     delta: float
 
 
-def _is_many(x: Any) -> bool:
-    """True when ``x`` is a collection of polygons rather than one polygon."""
-    if type(x) in (list, tuple) and x and type(x[0]) in (list, tuple) and len(x[0]) == 2:
-        if not isinstance(x[0][0], (list, tuple, np.ndarray)):
-            return False  # a list of points: one polygon
-    name = type(x).__name__
-    if name in ("GeoSeries", "GeometryArray"):
-        return True
-    if isinstance(x, np.ndarray):
-        return x.dtype == object and x.ndim == 1 and (len(x) == 0 or not np.isscalar(x[0]))
-    if type(x).__module__.startswith("shapely"):
-        return False
-    if isinstance(x, (list, tuple)):
-        if len(x) == 0:
-            return False
-        first = x[0]
-        return first is None or np.ndim(first) == 2 or type(first).__module__.startswith("shapely")
-    return False
-
-
 def _finite_float(v: Any, name: str) -> float:
     return _options.real(v, name)
 
@@ -155,17 +136,17 @@ def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
     holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
     by the core before offsetting (``unite``; for a MultiPolygon, found by the same
     check)."""
-    from ._core import _ext
+    from ._engine import core
 
-    verdict = _ext.check_polygons_f(xy, ring_off, poly_off, False)
+    verdict = core.check_polygons_f(xy, ring_off, poly_off, False)
     if verdict[0]:
-        from ._polygon import Rings, problem_error
+        from ._engine.polygon import Rings, problem_error
 
         raise problem_error(
             *verdict[:4], Rings(xy, ring_off, poly_off), name, _HINT,
             nonfinite_hint=_NONFINITE_HINT,
         )  # fmt: skip
-    if not unite and len(poly_off) > 2 and _ext.check_polygons_f(xy, ring_off, poly_off, True)[0]:
+    if not unite and len(poly_off) > 2 and core.check_polygons_f(xy, ring_off, poly_off, True)[0]:
         unite = True  # a MultiPolygon whose valid parts overlap or share edges
     if len(ring_off) == 2:
         return _Input(xy, ring_off, _ZERO1, unite, 0.0)
@@ -269,7 +250,7 @@ def _read(obj: Any, name: str) -> _Input:
         raise NonFiniteError(
             f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
         )
-    from ._polygon import Invalid, probe, rings_of_array
+    from ._engine.polygon import Invalid, probe, rings_of_array
 
     rings = rings_of_array(data)
     if len(data) >= 3:
@@ -308,8 +289,8 @@ def _run(
     extra_delta: float = 0.0,
     labels: bool = False,
 ) -> tuple:
-    """One compiled call for all ``inputs``: the raw result of ``_ext.offset_rings``."""
-    from ._core import _ext
+    """One compiled call for all ``inputs``: the raw result of ``core.offset_rings``."""
+    from ._engine import core
 
     if len(inputs) == 1:
         a = inputs[0]
@@ -328,7 +309,7 @@ def _run(
         delta = np.fromiter((a.delta + extra_delta for a in inputs), np.float64, len(inputs))
     if xy.dtype != np.float64 or not xy.flags.c_contiguous:
         xy = np.ascontiguousarray(xy, np.float64)
-    return _ext.offset_rings(
+    return core.offset_rings(
         xy,
         ro,
         hole,
@@ -348,42 +329,42 @@ def _run(
 
 def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
     """Turn the core's verdict on one polygon into the documented error."""
-    from ._core import _ext
+    from ._engine import core
 
-    if code == _ext.OFFSET_TOLERANCE:
+    if code == core.OFFSET_TOLERANCE:
         raise GeometryError(
             f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
             f"magnitudes (about {least:.3g})",
             argument="tolerance",
             hint="raise the tolerance, or move the polygon nearer to the origin",
         )
-    if code == _ext.OFFSET_DISTANCE:
+    if code == core.OFFSET_DISTANCE:
         raise GeometryError(
             f"distance: {distance!r} is too small for float64 at these magnitudes (the "
             f"least tolerance it can guarantee, about {least:.3g}, is more than half of it)",
             argument="distance",
             hint="move the polygon nearer to the origin, or offset by more",
         )
-    if code == _ext.OFFSET_UNDERFLOW:
+    if code == core.OFFSET_UNDERFLOW:
         raise OverflowGeometryError(
             "result: the offset underflows float64 (magnitude below 2**-1020: rounding to "
             "float64 may exceed the guaranteed tolerance)",
             argument="result",
             hint="scale the input up by a power of two, and the result down",
         )
-    if status == _ext.RESOURCE:
+    if status == core.Status.RESOURCE:
         raise ResourceLimitError(
             "polygon: the offset's overlay would exceed its work limit",
             argument="polygon",
             hint="offset fewer vertices at once, or with a coarser tolerance",
         )
-    if code == _ext.OFFSET_OVERFLOWS or status == _ext.OVERFLOW:
+    if code == core.OFFSET_OVERFLOWS or status == core.Status.OVERFLOW:
         raise OverflowGeometryError(
             "result: the offset does not fit in float64 (a coordinate is infinite)",
             argument="result",
             hint="scale the input down (or offset by a smaller distance)",
         )
-    if code != _ext.OFFSET_FINE or status != _ext.OK:
+    if code != core.OFFSET_FINE or status != core.Status.OK:
         raise GeometryError(
             f"polygon: the offset could not be certified (code {code}, status {status})",
             argument="polygon",
@@ -444,9 +425,9 @@ def _batch(polys: list, fn_args: tuple) -> list:
 
 def _map(polygon: Any, fn_args: tuple) -> Any:
     """Offset one polygon, or each polygon of a container (same kind out)."""
-    if not _is_many(polygon):
+    if not is_many(polygon, empty=False):
         return _batch([polygon], fn_args)[0]
-    from ._containers import apply, boxed
+    from ._engine.containers import apply, boxed
 
     if boxed(polygon):
         # GeoSeries / GeometryArray / object arrays: the shared container rules
@@ -590,7 +571,7 @@ def offset(
     'POLYGON ((-1 -1, 3 -1, 3 3, -1 3, -1 -1))'
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
-    if not _is_many(polygon):
+    if not is_many(polygon, empty=False):
         # one polygon: the shortest way through
         res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim,
                    _distance_error(distance, d))  # fmt: skip
@@ -996,7 +977,7 @@ def _trace(
     (moved by ``r``); ``sign``: +1 when the arcs turn counter-clockwise (a grow), -1 (a
     shrink); ``slack``: the verification's resolution.
     """
-    from ._core import _ext
+    from ._engine import core
 
     starts, ends, vid_s, vid_e = [], [], [], []
     base = 0
@@ -1069,7 +1050,7 @@ def _trace(
     for item in items:
         out_rings = []
         for c, lab in item:
-            if lab is not None and (lab == _ext.OFFSET_DETOUR).any():
+            if lab is not None and (lab == core.OFFSET_DETOUR).any():
                 lab = None  # never expected: the overlay's boundary avoids detours
             if lab is None:
                 lab, _ = nearest((c + np.roll(c, -1, 0)) / 2)
@@ -1228,7 +1209,7 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
         r = abs(d)
         ring = np.array([[cx + r, cy, 1.0, cx, cy], [cx - r, cy, 1.0, cx, cy]])
         return OffsetArcs([[ring]], d, polygon)
-    from ._core import _ext
+    from ._engine import core
 
     best = None
     ok = plausible = False
@@ -1237,7 +1218,7 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
                    _distance_error(distance, d), labels=True)  # fmt: skip
         xy, ro, po, _go, info, extra = res
         status, code, least = int(info[0, 0]), int(info[0, 1]), float(info[0, 2])
-        if code == _ext.OFFSET_TOLERANCE and best is not None:
+        if code == core.OFFSET_TOLERANCE and best is not None:
             break  # finer than float64 allows at this magnitude: keep the best so far
         _raise_for(code, status, least, distance, rel * abs(d))
         if len(po) == 1:

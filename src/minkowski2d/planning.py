@@ -37,10 +37,10 @@ from typing import Any
 
 import numpy as np
 
-from . import _dispatch as D
-from . import _options
 from ._core import _ext
-from ._foreign import foreign_errors
+from ._engine import dispatch as D
+from ._engine import options as _options
+from ._engine.foreign import foreign_errors
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -168,7 +168,7 @@ def _triangulate(poly: Any, name: str) -> list[np.ndarray]:
     triangulation (every decision an exact sign, every triangle vertex an input vertex,
     bit for bit, each triangle counter-clockwise); an invalid polygon raises
     SelfIntersectionError naming the ring and vertex."""
-    from ._polygon import rings_of, triangulate
+    from ._engine.polygon import rings_of, triangulate
 
     rings = rings_of(poly)
     tri = triangulate(rings, name, _SIMPLE_HINT, what="not a simple polygon")
@@ -607,7 +607,7 @@ class MotionPlanner:
         else:
             inner = shapely.Polygon(_ring_coords(workspace))
         if inner.geom_type in ("Polygon", "MultiPolygon") and not inner.is_empty:
-            from ._polygon import check, rings_of
+            from ._engine.polygon import check, rings_of
 
             check(rings_of(inner), "workspace", _SIMPLE_HINT, what="not a simple polygon")
         holes = [inner.exterior] if inner.geom_type == "Polygon" else []
@@ -869,7 +869,7 @@ class MotionPlanner:
         C-obstacle pieces, computed by the core's exact overlay (vertices correctly
         rounded). The result is regularized: zero-width passages, which the planner
         does use, are not shown."""
-        from ._overlay import overlay
+        from ._engine.overlay import overlay
 
         if self.box is not None:
             b = [float(v) for v in self.box]
@@ -981,7 +981,7 @@ def _union_shapes(pieces: list) -> Any:
     the core's exact overlay, points and segments beside them."""
     import shapely
 
-    from ._overlay import overlay
+    from ._engine.overlay import overlay
 
     arrs = [np.asarray(p, dtype=np.float64) for p in pieces]
     area = overlay([a for a in arrs if len(a) >= 3])

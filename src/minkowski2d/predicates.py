@@ -32,22 +32,20 @@ from typing import Any
 
 import numpy as np
 
-from ._core import _ext
+from ._engine import core
 from .errors import NonFiniteError, ShapeError
 
 __all__ = ["orient", "cross_sign", "orient_array", "ERRBOUND", "MINBOUND"]
 
-EPS = 2.0**-53
-#: Relative error bound of the float cross product (Shewchuk's ccwerrboundA).
-ERRBOUND = (3.0 + 16.0 * EPS) * EPS
+#: Relative error bound of the float cross product (Shewchuk's ccwerrboundA; exact.hpp).
+ERRBOUND = core.ERRBOUND
 #: The bound is relative: it holds while the products stay clear of underflow. Below this
 #: value of ERRBOUND * (|l| + |r|) (that is, |l| + |r| < 2**-960) the float test is not
 #: trusted and the exact evaluation decides.
-MINBOUND = ERRBOUND * 2.0**-960
+MINBOUND = core.MINBOUND
 
-
-_INT_LIMIT = 1 << 62  # the core's int64 predicate: |x| < 2**62
-_F64_EXACT_INT = 1 << 53  # ints up to this convert to float64 exactly
+_INT_LIMIT = core.INT_LIMIT  # the core's int64 predicate
+_F64_EXACT_INT = core.FLOAT_EXACT_INT  # ints up to this convert to float64 exactly
 # float types whose conversion to a Python float is exact
 _FLOATS = (float, np.float64, np.float32, np.float16)
 
@@ -96,11 +94,11 @@ def _cross(pts: tuple[Any, ...], names: tuple[str, ...]) -> int:
                 raise _nonfinite(names[i // 2], v)
     top = max(kinds)
     if top == 0:  # ints, |x| <= 2**53
-        return _ext.cross_sign_i(*(int(v) for v in vals))
+        return core.cross_sign_i(*(int(v) for v in vals))
     if top == 1:  # floats, and ints that convert exactly
-        return _ext.cross_sign_f(*(float(v) for v in vals))
+        return core.cross_sign_f(*(float(v) for v in vals))
     if top == 2 and 1 not in kinds:  # ints, |x| < 2**62
-        return _ext.cross_sign_i(*(int(v) for v in vals))
+        return core.cross_sign_i(*(int(v) for v in vals))
     # large ints next to floats, ints beyond 2**62, Fractions, other exact numbers
     e = [_exact(v, names[i // 2]) for i, v in enumerate(vals)]
     d = (e[2] - e[0]) * (e[7] - e[5]) - (e[3] - e[1]) * (e[6] - e[4])
@@ -122,7 +120,7 @@ def _cross_exact(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
 
 def _cross_float(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
     """Exact sign of (a1 - a0) x (b1 - b0) for finite float coordinates (the core)."""
-    return _ext.cross_sign_f(
+    return core.cross_sign_f(
         float(a0[0]),
         float(a0[1]),
         float(a1[0]),
@@ -246,14 +244,14 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
                 )
     if all(k in "iub" for k in kinds) and max(_int_span(v) for v in arrs) < _INT_LIMIT:
         pi, qi, ri = (np.ascontiguousarray(v, dtype=np.int64) for v in arrs)
-        return _ext.orient_i(pi, qi, ri)
+        return core.orient_i(pi, qi, ri)
     if (
         all(k in "iubf" for k in kinds)
         and all(v.dtype.itemsize <= 8 for v in arrs if v.dtype.kind == "f")
         and all(_int_span(v) <= _F64_EXACT_INT for v in arrs if v.dtype.kind in "iub")
     ):
         pf, qf, rf = (np.ascontiguousarray(v, dtype=np.float64) for v in arrs)
-        return _ext.orient_f(pf, qf, rf)
+        return core.orient_f(pf, qf, rf)
     # object arrays (Fractions, large ints), long doubles, large ints next to floats
     out = np.empty(len(arrs[0]), dtype=np.int8)
     for k, (a, b, c) in enumerate(zip(*(v.tolist() for v in arrs))):

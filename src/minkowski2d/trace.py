@@ -2,7 +2,7 @@
 
 :func:`merge_trace` runs the very merge that ``minkowski_sum`` runs: the compiled
 core's recording variant of its merge for int64 and float64 input
-(``_ext.merge_record_*``), or :mod:`minkowski2d._exact` with its ``record`` hook for
+(``core.merge_record_*``), or :mod:`minkowski2d._engine.exact` with its ``record`` hook for
 exact numbers and turns what it recorded into a list of
 :class:`MergeStep`. Nothing here decides an angle order a second time: the step's source
 and the sign that decided it are the merge's own. The trace only adds explanations: the
@@ -28,9 +28,9 @@ from typing import Any
 
 import numpy as np
 
-from . import _dispatch as D
-from . import _exact
-from ._core import _ext
+from ._engine import core
+from ._engine import dispatch as D
+from ._engine import exact as _exact
 from ._types import ArrayLike2, Polygon
 from .errors import OverflowGeometryError
 
@@ -43,7 +43,7 @@ __all__ = [
     "json_point",
 ]
 
-_JS_SAFE = 1 << 53
+_JS_SAFE = core.FLOAT_EXACT_INT
 
 Point = tuple[Any, Any]
 
@@ -367,10 +367,10 @@ def _run(a: ArrayLike2, b: ArrayLike2, hull: bool) -> tuple[list, int, list, int
         out = _exact.merge_lists(qa, sa, qb, sb, record=record)
         return qa, sa, qb, sb, out, record, _exact.to_array(out, out_kind)
     if hull:
-        hull_fn = _ext.hull_i if path == "i" else _ext.hull_f
+        hull_fn = core.hull_i if path == "i" else core.hull_f
         A = np.ascontiguousarray(A[hull_fn(A)])
         B = np.ascontiguousarray(B[hull_fn(B)])
-    fn = _ext.merge_record_i if path == "i" else _ext.merge_record_f
+    fn = core.merge_record_i if path == "i" else core.merge_record_f
     res, steps, ia, sa, ib, sb, code, which, v = fn(A, B)
     if code:
         raise D.status_error(code, v, ("a", "b", "result")[which], (A, B, None)[which])

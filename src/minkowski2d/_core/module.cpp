@@ -324,7 +324,7 @@ inline ReadResult read_pairs(PyObject* seq, std::vector<i64>& ints, std::vector<
         if (ovf || x >= mk::INT_LIMIT || x <= -mk::INT_LIMIT) return {mk::UNHANDLED, 0, 0};
         ints[2 * k + c] = (i64)x;
         dbls[2 * k + c] = (double)x;
-        if (x > ((i64)1 << 53) || x < -((i64)1 << 53)) big_int = true;
+        if (x > mk::FLOAT_EXACT_INT || x < -mk::FLOAT_EXACT_INT) big_int = true;
         any_int = true;
       } else {
         return {mk::UNHANDLED, 0, 0};
@@ -355,7 +355,7 @@ nb::tuple sum_lists(nb::handle a, nb::handle b) {
     // across sides check here), so the conversion to double is exact
     const std::vector<i64>& iv = ra.kind ? ib_ : ia_;
     for (i64 v : iv)
-      if (v > ((i64)1 << 53) || v < -((i64)1 << 53))
+      if (v > mk::FLOAT_EXACT_INT || v < -mk::FLOAT_EXACT_INT)
         return nb::make_tuple(nb::none(), (int)mk::UNHANDLED, 0, 0, kind);
   }
   i64 big = std::max(na, nb_);
@@ -459,7 +459,7 @@ nb::tuple flatten(nb::handle seq) {
     } else {
       any_int = true;
       for (i64 v : ibuf)
-        if (v > ((i64)1 << 53) || v < -((i64)1 << 53)) big_int = true;
+        if (v > mk::FLOAT_EXACT_INT || v < -mk::FLOAT_EXACT_INT) big_int = true;
     }
     ints.insert(ints.end(), ibuf.begin(), ibuf.end());
     dbls.insert(dbls.end(), dbuf.begin(), dbuf.end());
@@ -535,6 +535,7 @@ NB_MODULE(_ext, m) {
   m.attr("INTERNAL") = (int)mk::INTERNAL;
   m.attr("RESOURCE") = (int)mk::RESOURCE;
   m.attr("INT_LIMIT") = (long long)mk::INT_LIMIT;
+  m.attr("FLOAT_EXACT_INT") = (long long)mk::FLOAT_EXACT_INT;
   m.attr("ERRBOUND") = mk::ERRBOUND;
   m.attr("MINBOUND") = mk::MINBOUND;
 

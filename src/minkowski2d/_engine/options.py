@@ -29,7 +29,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import NonFiniteError, OptionError, OverflowGeometryError
+from ..errors import NonFiniteError, OptionError, OverflowGeometryError
 
 __all__ = [
     "MAX_THREADS",

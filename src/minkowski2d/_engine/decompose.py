@@ -4,7 +4,7 @@ Both steps run in the compiled core (``minkowski2d._core._ext``, C++, GIL releas
 decide every turn with the exact ``cross_sign`` predicate, at every magnitude
 (subnormals to ``1.7e308``), without GEOS:
 
-* the triangulation (``triangulate.hpp``, through :mod:`minkowski2d._polygon`): a plane
+* the triangulation (``triangulate.hpp``, through :mod:`minkowski2d._engine.polygon`): a plane
   sweep cuts the polygon into monotone pieces (de Berg et al., ch. 3), each is
   triangulated with a stack; O(n log n), input vertices only, holes and holes touching
   the shell or each other at points allowed;
@@ -19,8 +19,8 @@ from typing import Any
 
 import numpy as np
 
-from ._core import _ext
-from ._polygon import rings_of, triangulate
+from . import core
+from .polygon import rings_of, triangulate
 
 
 def _twins(ids: np.ndarray, nv: int) -> np.ndarray:
@@ -53,7 +53,7 @@ def decompose_rings(rings: Any, name: str, merge: bool) -> tuple[np.ndarray, np.
         return np.empty((0, 2), np.float64), np.zeros(1, np.int64)
     verts = rings.coords
     twin = _twins(ids, len(verts))
-    vid, off = _ext.hertel_mehlhorn_f(verts, ids, twin, bool(merge))
+    vid, off = core.hertel_mehlhorn_f(verts, ids, twin, bool(merge))
     return verts[vid], off
 
 
@@ -66,5 +66,5 @@ def decompose(geom, merge: bool) -> tuple[np.ndarray, np.ndarray]:
     if len(ids) == 0:
         return np.empty((0, 2), np.float64), np.zeros(1, np.int64)
     twin = _twins(ids, len(verts))
-    vid, off = _ext.hertel_mehlhorn_f(verts, ids, twin, bool(merge))
+    vid, off = core.hertel_mehlhorn_f(verts, ids, twin, bool(merge))
     return verts[vid], off

@@ -4,7 +4,7 @@ core's ragged results into shapely Polygons / MultiPolygons.
 
 Examples
 --------
->>> from minkowski2d._overlay import overlay
+>>> from minkowski2d._engine.overlay import overlay
 >>> sq = [(0, 0), (2, 0), (2, 2), (0, 2)]
 >>> overlay([sq, [(1, 1), (3, 1), (3, 3), (1, 3)]]).wkt
 'POLYGON ((0 0, 2 0, 2 1, 3 1, 3 3, 1 3, 1 2, 0 2, 0 0))'
@@ -18,15 +18,15 @@ from typing import Any
 
 import numpy as np
 
-from ._core import _ext
-from .errors import GeometryError, OverflowGeometryError, ResourceLimitError
+from ..errors import GeometryError, OverflowGeometryError, ResourceLimitError
+from . import core
 
 __all__ = ["overlay", "geometries"]
 
 RULES = {
-    "union": _ext.OVERLAY_UNION,
-    "difference": _ext.OVERLAY_DIFFERENCE,
-    "intersection": _ext.OVERLAY_INTERSECTION,
+    "union": core.OVERLAY_UNION,
+    "difference": core.OVERLAY_DIFFERENCE,
+    "intersection": core.OVERLAY_INTERSECTION,
 }
 
 
@@ -89,22 +89,22 @@ def overlay(
     off = np.concatenate([[0], np.cumsum([len(a) for a in arrs])]).astype(np.int64)
     w = np.ones(n, np.int64) if weights is None else np.asarray(weights, np.int64)
     ly = np.zeros(n, np.int64) if layers is None else np.asarray(layers, np.int64)
-    out, ro, po, status, _ = _ext.overlay_rings(xy, np.empty((0, 2)), off, w, ly, RULES[rule])
+    out, ro, po, status, _ = core.overlay_rings(xy, np.empty((0, 2)), off, w, ly, RULES[rule])
     check(int(status), argument)
     return geometries(out, ro, po, np.array([0, len(po) - 1], np.int64))[0]
 
 
 def check(status: int, argument: str) -> None:
     """Raise the error a status of the overlay stands for (OK: nothing)."""
-    if status == _ext.OK:
+    if status == core.Status.OK:
         return
-    if status == _ext.OVERFLOW:
+    if status == core.Status.OVERFLOW:
         raise OverflowGeometryError(
             f"{argument}: the result overflows float64 (a coordinate beyond ±1.8e308)",
             argument=argument,
             hint="scale the input down; the result's coordinates must fit in float64",
         )
-    if status == _ext.RESOURCE:
+    if status == core.Status.RESOURCE:
         raise ResourceLimitError(
             f"{argument}: the overlay needs more work than its limits allow",
             argument=argument,

@@ -18,7 +18,7 @@ shapely's GEOSException       GeometryError, or OverflowGeometryError where GEOS
 
 Examples
 --------
->>> from minkowski2d._foreign import foreign_errors
+>>> from minkowski2d._engine.foreign import foreign_errors
 >>> try:
 ...     with foreign_errors("distance", "reading the distance"):
 ...         float(2**1100)
@@ -34,7 +34,7 @@ import json
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from .errors import (
+from ..errors import (
     GeometryError,
     InputFormatError,
     OverflowGeometryError,

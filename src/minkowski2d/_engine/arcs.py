@@ -25,7 +25,7 @@ piece are kept exactly.
 Examples
 --------
 >>> import numpy as np
->>> from minkowski2d._arcs import approximate, ring_area
+>>> from minkowski2d._engine.arcs import approximate, ring_area
 >>> half = [(1.0, 0.0, 1.0), (-1.0, 0.0, 0.0)]   # a half disk: an arc, then its diameter
 >>> round(ring_area(half), 12) == round(np.pi / 2, 12)
 True
@@ -41,7 +41,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import GeometryError
+from ..errors import GeometryError
 
 __all__ = [
     "DEFAULT_RELATIVE_TOLERANCE",

@@ -10,7 +10,7 @@ too. GEOS is not asked.
 
 Examples
 --------
->>> from minkowski2d._polygon import check, rings_of_array, triangulate
+>>> from minkowski2d._engine.polygon import check, rings_of_array, triangulate
 >>> L = rings_of_array([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)])
 >>> check(L, "a").orientation.tolist()
 [1]
@@ -25,14 +25,13 @@ SelfIntersectionError 2 a: not a valid polygon (the boundary crosses itself at v
 
 from __future__ import annotations
 
-import enum
 from typing import Any, NamedTuple
 
 import numpy as np
 
-from ._core import _ext
-from ._dispatch import Status
-from .errors import EmptyGeometryError, GeometryError, NonFiniteError, SelfIntersectionError
+from ..errors import EmptyGeometryError, GeometryError, NonFiniteError, SelfIntersectionError
+from . import core
+from .core import Invalid, Status
 
 __all__ = [
     "Rings",
@@ -47,8 +46,6 @@ __all__ = [
     "problem_error",
 ]
 
-#: Why a polygon is invalid (``Status.INVALID_POLYGON``); defined once, in exact.hpp.
-Invalid = enum.IntEnum("Invalid", dict(_ext.INVALID_REASONS))  # type: ignore[misc]
 
 _TEXT = {
     Invalid.RING_FEW_VERTICES: "fewer than 3 distinct vertices",
@@ -187,7 +184,7 @@ def check(
     """
     if len(rings.polygon_offsets) < 2:
         raise EmptyGeometryError(f"{name}: empty polygon", argument=name)
-    status, reason, ring, vertex, orientation, disconnected = _ext.check_polygons_f(
+    status, reason, ring, vertex, orientation, disconnected = core.check_polygons_f(
         *_args(rings), bool(disjoint)
     )
     if status:
@@ -201,7 +198,7 @@ def check(
 def probe(rings: Rings, *, disjoint: bool = False) -> tuple:
     """The core's verdict without raising: ``(status, reason, ring, vertex,
     orientation, disconnected)`` (``status`` 0 when valid)."""
-    return _ext.check_polygons_f(*_args(rings), bool(disjoint))
+    return core.check_polygons_f(*_args(rings), bool(disjoint))
 
 
 def triangulate(
@@ -222,7 +219,7 @@ def triangulate(
     incircle test), which Hertel-Mehlhorn turns into fewer convex pieces."""
     if len(rings.polygon_offsets) < 2:
         raise EmptyGeometryError(f"{name}: empty polygon", argument=name)
-    status, reason, ring, vertex, tri = _ext.triangulate_polygons_f(*_args(rings), bool(delaunay))
+    status, reason, ring, vertex, tri = core.triangulate_polygons_f(*_args(rings), bool(delaunay))
     if status:
         raise problem_error(status, reason, ring, vertex, rings, name, hint, what=what)
     return tri

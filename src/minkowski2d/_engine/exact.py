@@ -1,7 +1,7 @@
 """The exact Python path: the compiled core's normalization and merge, step for step, on
 Python ints of any size and Fractions.
 
-The dispatcher (:mod:`minkowski2d._dispatch`) sends here only what the core cannot take
+The dispatcher (:mod:`minkowski2d._engine.dispatch`) sends here only what the core cannot take
 exactly: ints at or beyond 2**62, Fractions (also mixed with floats: a float is an exact
 dyadic rational, so ``Fraction(x)`` loses nothing), and ints beyond 2**53 mixed with
 floats. Every value here is an int or a Fraction, so ``ux * vy - uy * vx`` is exact as
@@ -10,7 +10,7 @@ give identical results (``tests/test_convex.py``).
 
 Examples
 --------
->>> from minkowski2d._exact import normalize_list
+>>> from minkowski2d._engine.exact import normalize_list
 >>> normalize_list([(0, 2), (2, 0), (1, 0), (0, 0)], "p")[0]
 [(0, 0), (2, 0), (0, 2)]
 """
@@ -22,22 +22,20 @@ from typing import Any
 
 import numpy as np
 
-from .errors import NotConvexError, OverflowGeometryError
+from ..errors import NotConvexError, OverflowGeometryError
+from .core import Status
 
 __all__ = ["normalize_list", "merge_lists", "hull_list", "to_array", "not_convex", "cross"]
 
-# status codes of the core (mirrored by _dispatch.Status); kept numeric here so this
-# module imports nothing compiled
-TURNS_BOTH_WAYS, SPIKE, WINDS_TWICE = 1, 2, 3
 
 _HINT = "pass hull=True to use the convex hull"
 
 
 def not_convex(name: str, code: int, vertex: int) -> NotConvexError:
     """The error for a convexity status code, naming the argument and vertex."""
-    if code == TURNS_BOTH_WAYS:
+    if code == Status.TURNS_BOTH_WAYS:
         msg = f"{name}: not convex: the boundary turns the other way at vertex {vertex}"
-    elif code == SPIKE:
+    elif code == Status.SPIKE:
         msg = f"{name}: not convex: the boundary doubles back on itself at vertex {vertex}"
     else:
         msg = (
@@ -98,7 +96,7 @@ def normalize_list(pts: list, name: str) -> tuple[list, list, int]:
             if not s:
                 s = o
             elif o != s:
-                raise not_convex(name, TURNS_BOTH_WAYS, idx[t])
+                raise not_convex(name, Status.TURNS_BOTH_WAYS, idx[t])
         prv = cur
     if not s:
         return [q[0], top_pt], [idx[0], top_idx], 1
@@ -118,7 +116,7 @@ def normalize_list(pts: list, name: str) -> tuple[list, list, int]:
             if ((p1[0] > p0[0]) - (p1[0] < p0[0]) != (p2[0] > p1[0]) - (p2[0] < p1[0])) or (
                 (p1[1] > p0[1]) - (p1[1] < p0[1]) != (p2[1] > p1[1]) - (p2[1] < p1[1])
             ):
-                raise not_convex(name, SPIKE, idx[t])
+                raise not_convex(name, Status.SPIKE, idx[t])
         q, idx = vq, vi
     k = len(q)
     split = k
@@ -130,7 +128,7 @@ def normalize_list(pts: list, name: str) -> tuple[list, list, int]:
             if not up:
                 split = t
         elif up:
-            raise not_convex(name, WINDS_TWICE, idx[t])
+            raise not_convex(name, Status.WINDS_TWICE, idx[t])
         py0 = p1
     return q, idx, split
 

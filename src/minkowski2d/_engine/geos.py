@@ -6,7 +6,7 @@ of a polygonal result. One place for each rule.
 Examples
 --------
 >>> import shapely
->>> from minkowski2d._geos import checked_polygonal, area_parts
+>>> from minkowski2d._engine.geos import checked_polygonal, area_parts
 >>> checked_polygonal(shapely.box(0, 0, 1, 1), "a", hint="fix it").area
 1.0
 >>> area_parts(shapely.GeometryCollection([shapely.box(0, 0, 1, 1), shapely.Point(5, 5)])).wkt
@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import (
+from ..errors import (
     EmptyGeometryError,
     GeometryError,
     OverflowGeometryError,
@@ -66,7 +66,7 @@ def boundary(argument: str, what: str, overflow_raises: bool = True) -> Any:
 def checked_polygonal(geom: Any, name: str, hint: str, nonfinite_hint: str | None = None) -> Any:
     """Validate a Polygon / MultiPolygon exactly and orient it (exteriors CCW, holes CW).
 
-    The checks are the compiled core's (:func:`minkowski2d._polygon.check`: exact signs at
+    The checks are the compiled core's (:func:`minkowski2d._engine.polygon.check`: exact signs at
     every magnitude, no GEOS). Empty → EmptyGeometryError; NaN/inf → NonFiniteError; a
     boundary that crosses or touches itself, rings that cross or overlap, a hole outside
     the shell or inside another hole, parts of a MultiPolygon that overlap →
@@ -75,8 +75,8 @@ def checked_polygonal(geom: Any, name: str, hint: str, nonfinite_hint: str | Non
     well-defined region: it is split into its parts (by the core's exact overlay: the
     union of its rings, traced ring by ring, splits at the touching points).
     """
-    from ._overlay import overlay
-    from ._polygon import check, oriented, rings_of, to_geometry
+    from .overlay import overlay
+    from .polygon import check, oriented, rings_of, to_geometry
 
     if geom.is_empty:
         raise EmptyGeometryError(f"{name}: empty {geom.geom_type}", argument=name)

@@ -20,20 +20,21 @@ from typing import Any
 
 import numpy as np
 
-from .errors import (
+from ..errors import (
     CoordinateTypeError,
     EmptyGeometryError,
     NonFiniteError,
     NotConvexError,
     ShapeError,
 )
+from . import core
 
 INT, FLOAT, EXACT = "int", "float", "exact"
 #: floats next to ints beyond 2**53: exact decisions (Fractions), float output
 XFLOAT = "xfloat"
 _RANK = {INT: 0, FLOAT: 1, XFLOAT: 2, EXACT: 3}
 
-_F53 = 1 << 53
+_F53 = core.FLOAT_EXACT_INT
 INT64_MAX = (1 << 63) - 1
 INT64_MIN = -(1 << 63)
 

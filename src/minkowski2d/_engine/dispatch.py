@@ -3,12 +3,12 @@ Python path; status codes -> exceptions.
 
 Paths
 -----
-* ``"i"``: the core's int64 kernels. Ints with ``|x| < 2**62`` (``_ext.INT_LIMIT``), so
+* ``"i"``: the core's int64 kernels. Ints with ``|x| < 2**62`` (``core.INT_LIMIT``), so
   every cross product of differences fits in ``__int128``.
 * ``"f"``: the core's float64 kernels. Any finite float, subnormal to 1.7e308: the filter
   decides, an exact accumulator decides what the filter cannot. Ints with ``|x| <= 2**53``
   next to floats are converted exactly.
-* ``"py"``: :mod:`minkowski2d._exact`, on Python ints and Fractions. Ints at or beyond
+* ``"py"``: :mod:`minkowski2d._engine.exact`, on Python ints and Fractions. Ints at or beyond
   2**62, Fractions (also next to floats), and ints beyond 2**53 next to floats (then the
   output is float, each coordinate correctly rounded from the exact sum).
 
@@ -17,7 +17,7 @@ Output kinds: ``"int"`` (int64, or Python ints in an object array beyond int64),
 
 Examples
 --------
->>> from minkowski2d._dispatch import pair
+>>> from minkowski2d._engine.dispatch import pair
 >>> A, B, out_kind, path = pair([(0, 0), (1, 0)], [(0.5, 0.0)], ("a", "b"))
 >>> out_kind, path, A.dtype
 ('float', 'f', dtype('float64'))
@@ -27,51 +27,30 @@ Examples
 
 from __future__ import annotations
 
-import enum
 from fractions import Fraction
 from typing import Any, NamedTuple
 
 import numpy as np
 
-from . import _exact
-from ._coerce import EXACT, FLOAT, INT, XFLOAT, as_array, py_points
-from ._core import _ext
-from .errors import (
+from ..errors import (
     GeometryError,
     NonFiniteError,
     OverflowGeometryError,
     ShapeError,
 )
+from . import core
+from . import exact as _exact
+from .coerce import EXACT, FLOAT, INT, XFLOAT, as_array, py_points
+from .core import Status
 
-__all__ = ["Status", "Operand", "operand", "pair", "status_error", "raise_status", "core"]
+__all__ = ["Status", "Operand", "operand", "pair", "status_error", "raise_status"]
 
-core = _ext
-
-INT_LIMIT = int(_ext.INT_LIMIT)
+INT_LIMIT = core.INT_LIMIT
 _CORE_DTYPES = (np.dtype(np.int64), np.dtype(np.float64))
 
 #: Tests set this to send everything through the exact Python path, to check that it and
 #: the core give identical results ("every speed identical").
 FORCE_EXACT = False
-_F53 = 1 << 53
-
-
-class Status(enum.IntEnum):
-    """Status codes of the compiled core (defined once, in exact.hpp)."""
-
-    OK = _ext.OK
-    TURNS_BOTH_WAYS = _ext.TURNS_BOTH_WAYS
-    SPIKE = _ext.SPIKE
-    WINDS_TWICE = _ext.WINDS_TWICE
-    OVERFLOW = _ext.OVERFLOW
-    NONFINITE = _ext.NONFINITE
-    RANGE = _ext.RANGE
-    UNHANDLED = _ext.UNHANDLED
-    SHAPE = _ext.SHAPE
-    EMPTY = _ext.EMPTY
-    INTERNAL = _ext.INTERNAL
-    RESOURCE = _ext.RESOURCE
-    INVALID_POLYGON = _ext.INVALID_POLYGON
 
 
 class Operand(NamedTuple):
@@ -131,7 +110,7 @@ def operand(obj: Any, name: str, fused: bool = False) -> Operand:
     """
     t = type(obj)
     if t is list or t is tuple:
-        res = _ext.flatten([obj])
+        res = core.flatten([obj])
         status = res[3]
         if status == Status.OK:
             arr = res[0]
@@ -209,7 +188,7 @@ def unify(A: Operand, B: Operand) -> tuple[Any, Any, str, str]:
     if A.path != "py" and B.path != "py":
         # one int64, one float64: exact conversion when the ints stay within 2**53
         ia, fa = (A, B) if A.path == "i" else (B, A)
-        if ia.data.size == 0 or int(np.abs(ia.data).max()) <= _F53:
+        if ia.data.size == 0 or int(np.abs(ia.data).max()) <= core.FLOAT_EXACT_INT:
             conv = ia.data.astype(np.float64)
             da, db = (conv, fa.data) if A.path == "i" else (fa.data, conv)
             return da, db, out_kind, "f"
@@ -231,7 +210,7 @@ def one(p: Any, name: str) -> tuple[Any, str, str]:
 
 def check_convex(p: Any, name: str) -> bool:
     """Validate ``p`` (errors name it ``name``); True if convex, False if not."""
-    from .errors import NotConvexError
+    from ..errors import NotConvexError
 
     data, _, path = one(p, name)
     if path == "py":
@@ -240,7 +219,7 @@ def check_convex(p: Any, name: str) -> bool:
         except NotConvexError:
             return False
         return True
-    fn = _ext.normalize_i if path == "i" else _ext.normalize_f
+    fn = core.normalize_i if path == "i" else core.normalize_f
     _, _, code, v = fn(data)
     if code in (Status.TURNS_BOTH_WAYS, Status.SPIKE, Status.WINDS_TWICE):
         return False

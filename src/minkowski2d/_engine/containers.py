@@ -29,7 +29,7 @@ fast path and come back as a ``Ragged`` (or arrays), also when chunked for progr
 Examples
 --------
 >>> import numpy as np, shapely
->>> from minkowski2d._containers import apply
+>>> from minkowski2d._engine.containers import apply
 >>> from minkowski2d import minkowski_sum_many
 >>> g = np.array([shapely.box(0, 0, 1, 1), None, shapely.Polygon()], dtype=object)
 >>> [None if x is None else x.wkt for x in apply(minkowski_sum_many, g, [(0, 0), (1, 0)])]
@@ -45,7 +45,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from .errors import GeometryError, NotConvexError, ShapeError
+from ..errors import GeometryError, NotConvexError, ShapeError
 
 __all__ = ["boxed", "unbox", "apply", "Box", "Progress", "check_progress"]
 
@@ -158,21 +158,28 @@ class Progress:
 
 def check_progress(progress: Any) -> None:
     """Raise for a ``progress=`` value that is not None, a bool or a callable."""
-    from . import _options
+    from . import options as _options
 
     _options.progress(progress)
 
 
-def _is_many(x: Any) -> bool:
-    """A collection of polygons (what the batch functions pair up), not one polygon."""
-    if type(x).__name__ == "Ragged":
+def is_many(x: Any, empty: bool = True) -> bool:
+    """A collection of polygons (what the batch functions pair up), not one polygon: a
+    Ragged, a GeoSeries or GeometryArray, a 1-D object array of geometries, or a list or
+    tuple whose first item is a polygon (2-D), a shapely geometry or ``None``. ``empty``
+    says what ``[]`` is: a collection of no polygons (the batch functions), or one empty
+    polygon (offset, whose error then names it)."""
+    if type(x).__name__ in ("Ragged", "GeoSeries", "GeometryArray"):
         return True
     if isinstance(x, np.ndarray):
         return x.dtype == object and x.ndim == 1 and (len(x) == 0 or not np.isscalar(x[0]))
     if type(x).__module__.startswith("shapely"):
         return False
     if isinstance(x, (list, tuple)):
-        return len(x) == 0 or np.ndim(x[0]) == 2 or type(x[0]).__module__.startswith("shapely")
+        if len(x) == 0:
+            return empty
+        first = x[0]
+        return first is None or np.ndim(first) == 2 or type(first).__module__.startswith("shapely")
     return False
 
 
@@ -214,7 +221,7 @@ def _run(
     names: Sequence[str],
     boxes: list,
 ) -> Any:
-    many = [_is_many(x) for x in operands]
+    many = [is_many(x) for x in operands]
     sizes = [len(x) for x, m in zip(operands, many) if m]
     if progress is None or progress is False or not sizes:
         try:

@@ -1,0 +1,1 @@
+"""The engine: the one private layer between the public API and the compiled core."""

@@ -1,0 +1,144 @@
+"""The gateway to the compiled core: the only Python module that imports ``_ext``.
+
+Everything Python asks of the core goes through the names below: the kernels, the limits,
+the status codes and the reasons a polygon is invalid. Each is defined once, in the C++
+headers (``exact.hpp`` for predicates, limits and :class:`Status`); Python reads them here,
+so the two cannot drift. Kernels come in pairs by path: ``*_i`` (int64, ``|x| < INT_LIMIT``)
+and ``*_f`` (float64, filtered then exact).
+
+>>> from minkowski2d._engine import core
+>>> core.INT_LIMIT == 2 ** 62, core.FLOAT_EXACT_INT == 2 ** 53
+(True, True)
+>>> core.cross_sign_f(0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+1
+"""
+
+from __future__ import annotations
+
+import enum
+
+from .._core import _ext
+from .._core._ext import (  # the kernels: the whole surface between Python and C++
+    PlannerF,
+    PlannerI,
+    check_polygons_f,
+    coll_contains,
+    coll_pairs,
+    coll_prep,
+    coll_single,
+    cross_sign_f,
+    cross_sign_i,
+    degenerate_pieces,
+    flatten,
+    general_pair,
+    general_sums,
+    hertel_mehlhorn_f,
+    hull_f,
+    hull_i,
+    merge_record_f,
+    merge_record_i,
+    normalize_f,
+    normalize_i,
+    offset_rings,
+    orient_f,
+    orient_i,
+    overlay_rings,
+    selftest,
+    sum_batch_f,
+    sum_batch_i,
+    sum_f,
+    sum_i,
+    sum_lists,
+    triangulate_polygons_f,
+)
+
+__all__ = [
+    "Status",
+    "Invalid",
+    "INT_LIMIT",
+    "FLOAT_EXACT_INT",
+    "ERRBOUND",
+    "MINBOUND",
+    "PlannerF",
+    "PlannerI",
+    "check_polygons_f",
+    "coll_contains",
+    "coll_pairs",
+    "coll_prep",
+    "coll_single",
+    "cross_sign_f",
+    "cross_sign_i",
+    "degenerate_pieces",
+    "flatten",
+    "general_pair",
+    "general_sums",
+    "hertel_mehlhorn_f",
+    "hull_f",
+    "hull_i",
+    "merge_record_f",
+    "merge_record_i",
+    "normalize_f",
+    "normalize_i",
+    "offset_rings",
+    "orient_f",
+    "orient_i",
+    "overlay_rings",
+    "selftest",
+    "sum_batch_f",
+    "sum_batch_i",
+    "sum_f",
+    "sum_i",
+    "sum_lists",
+    "triangulate_polygons_f",
+]
+
+#: int64 kernels take ``|x| < INT_LIMIT`` (2**62): every cross product fits in __int128.
+INT_LIMIT: int = int(_ext.INT_LIMIT)
+#: ints with ``|x| <= FLOAT_EXACT_INT`` (2**53) convert to float64 exactly.
+FLOAT_EXACT_INT: int = int(_ext.FLOAT_EXACT_INT)
+#: the float filter: Shewchuk's relative bound, and the floor below which it abstains.
+ERRBOUND: float = float(_ext.ERRBOUND)
+MINBOUND: float = float(_ext.MINBOUND)
+
+
+class Status(enum.IntEnum):
+    """Status codes of the compiled core (defined once, in exact.hpp)."""
+
+    OK = _ext.OK
+    TURNS_BOTH_WAYS = _ext.TURNS_BOTH_WAYS
+    SPIKE = _ext.SPIKE
+    WINDS_TWICE = _ext.WINDS_TWICE
+    OVERFLOW = _ext.OVERFLOW
+    NONFINITE = _ext.NONFINITE
+    RANGE = _ext.RANGE
+    UNHANDLED = _ext.UNHANDLED
+    SHAPE = _ext.SHAPE
+    EMPTY = _ext.EMPTY
+    INTERNAL = _ext.INTERNAL
+    RESOURCE = _ext.RESOURCE
+    INVALID_POLYGON = _ext.INVALID_POLYGON
+
+
+#: Why a polygon is invalid (``Status.INVALID_POLYGON``); defined once, in exact.hpp.
+Invalid = enum.IntEnum("Invalid", dict(_ext.INVALID_REASONS))  # type: ignore[misc]
+
+#: The collision walk's queries and its own out-of-range code (collision.hpp).
+COLL_INTERSECTS: int = _ext.COLL_INTERSECTS
+COLL_DISTANCE: int = _ext.COLL_DISTANCE
+COLL_PENETRATION: int = _ext.COLL_PENETRATION
+COLL_GJK: int = _ext.COLL_GJK
+COLL_AUTO: int = _ext.COLL_AUTO
+COLL_OUT_OF_RANGE: int = _ext.COLL_OUT_OF_RANGE
+#: The overlay's rules (overlay.hpp).
+OVERLAY_UNION: int = _ext.OVERLAY_UNION
+OVERLAY_DIFFERENCE: int = _ext.OVERLAY_DIFFERENCE
+OVERLAY_INTERSECTION: int = _ext.OVERLAY_INTERSECTION
+#: The general sum's methods (general.cpp).
+METHOD_ERODE: int = _ext.METHOD_ERODE
+#: The offset's codes (offset.hpp).
+OFFSET_FINE: int = _ext.OFFSET_FINE
+OFFSET_TOLERANCE: int = _ext.OFFSET_TOLERANCE
+OFFSET_DISTANCE: int = _ext.OFFSET_DISTANCE
+OFFSET_UNDERFLOW: int = _ext.OFFSET_UNDERFLOW
+OFFSET_OVERFLOWS: int = _ext.OFFSET_OVERFLOWS
+OFFSET_DETOUR: int = _ext.OFFSET_DETOUR
