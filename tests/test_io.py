@@ -275,9 +275,9 @@ class TestExceptionsThatAreNotGeometryErrors:
         assert info.value.argument == "-"
 
     def test_inline_points_and_long_inline_polygons(self, tmp_path, capsys):
-        from minkowski2d.animation.cli import read_polygon
         from minkowski2d.animation.page import parse_points
         from minkowski2d.cli import main
+        from minkowski2d.cli.animation import read_polygon
 
         with pytest.raises(ShapeError, match="cannot read the number '0.2/45'") as info:
             parse_points("0 0.2/45, 1 0", "A")

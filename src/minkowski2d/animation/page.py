@@ -155,7 +155,7 @@ def parse_points(text: str, name: str) -> list:
 def _renamed(exc: GeometryError, name: str) -> GeometryError:
     """The same error with the argument named as the page names it (from the error's
     ``argument`` field), the ``hull=True`` advice worded for the page."""
-    from .._cli_common import renamed_error
+    from ..cli.common import renamed_error
 
     arg = exc.argument
     return renamed_error(
@@ -563,7 +563,7 @@ def animate(
     >>> p.name, p.stat().st_size > 10000
     ('animation.html', True)
     """
-    from .._cli_common import CLIError, write_output
+    from ..cli.common import CLIError, write_output
 
     page = render(a, b, obstacle=obstacle, robot=robot, hull=hull, title=title)
     try:

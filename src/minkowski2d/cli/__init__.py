@@ -4,9 +4,9 @@ Subcommands: ``demo``, ``sum``, ``inflate``, ``hull``, and those that feature mo
 register through ``add_parser(subparsers)`` (animation, collision, general sums).
 
 Bad input prints one line, ``minkowski2d: error: <what and where> (hint: ...)``, on
-standard error (built from the error's fields, :func:`._cli_common.format_error`) and
+standard error (built from the error's fields, :func:`.common.format_error`) and
 exits with status 2; no output file is written then. Every command writes through
-:func:`._cli_common.write_output`: an output that is one of the inputs (same device and
+:func:`.common.write_output`: an output that is one of the inputs (same device and
 inode, ``.dat#k`` selectors stripped) or a directory is refused, and the text goes to a
 unique ``O_EXCL`` temporary file renamed into place, removed on every error path.
 """
@@ -17,23 +17,19 @@ import argparse
 import importlib
 import sys
 from collections.abc import Sequence
-from typing import Any
 
-from ._cli_common import CLIError, add_io_options, emit, format_error, output_format
-from ._cli_features import run_features
+from .common import CLIError, add_io_options, emit, format_error, is_general, output_format
+from .features import run_features
 
 __all__ = ["main", "emit", "build_parser", "CLIError", "output_format"]
 
-# kept for code that imported the old private name from here
-_add_io_options = add_io_options
-
+#: The one plugin table: each module's ``add_parser(subparsers)`` registers its commands.
 _PLUGINS = (
-    "minkowski2d.animation.cli",
-    "minkowski2d._cli_collision",
-    "minkowski2d._cli_general",
-    "minkowski2d._cli_features",
-    "minkowski2d._cli_offset",
-    "minkowski2d._cli_nesting",
+    "minkowski2d.cli.animation",
+    "minkowski2d.cli.collision",
+    "minkowski2d.cli.general",
+    "minkowski2d.cli.offset",
+    "minkowski2d.cli.nesting",
     "minkowski2d._cli_planning",
 )
 
@@ -41,27 +37,16 @@ SEED_A = [(0, 0), (2, 0), (0, 2)]
 SEED_B = [(0, 0), (1, 0), (1, 1), (0, 1)]
 
 
-def _is_general(g: Any, name: str) -> bool:
-    """True when ``g`` needs the general (non-convex / holes) sum; validates ``g``."""
-    import numpy as np
-
-    from ._engine.dispatch import check_convex
-
-    if not isinstance(g, np.ndarray):
-        return True  # shapely Polygon with holes or MultiPolygon
-    return not check_convex(g, name)
-
-
 def _cmd_demo(args: argparse.Namespace) -> int:
-    from ._cli_common import write_output
-    from .convex import minkowski_sum
+    from ..convex import minkowski_sum
+    from .common import write_output
 
     s = minkowski_sum(SEED_A, SEED_B)
     print("A (triangle):", [list(p) for p in SEED_A])
     print("B (square):  ", [list(p) for p in SEED_B])
     print("A ⊕ B:       ", s.tolist())
     try:
-        from .animation.page import DEMO_TITLE, render
+        from ..animation.page import DEMO_TITLE, render
     except ImportError:
         return 0
     path = write_output(render(SEED_A, SEED_B, title=DEMO_TITLE), args.output or "animation.html")
@@ -72,20 +57,14 @@ def _cmd_demo(args: argparse.Namespace) -> int:
 def _cmd_sum(args: argparse.Namespace) -> int:
     if (status := run_features(args, "sum")) is not None:  # FeatureCollections, DXF
         return status
-    from .convex import minkowski_sum
-    from .io import format_geometry, read_geometry
+    from ..convex import minkowski_sum
+    from ..io import format_geometry, read_geometry
 
     a = read_geometry(args.a)
     b = read_geometry(args.b)
-    if not args.hull and (_is_general(a, args.a) | _is_general(b, args.b)):
-        try:
-            from .general import minkowski_sum_general
-        except ImportError:
-            minkowski_sum_general = None
-        if minkowski_sum_general is None:
-            from .errors import NotConvexError
+    if not args.hull and (is_general(a, args.a) | is_general(b, args.b)):
+        from ..general import minkowski_sum_general
 
-            raise NotConvexError("an input is not convex (use --hull for its convex hull)")
         print(
             "minkowski2d: note: an input is not convex or has holes; using the general sum",
             file=sys.stderr,
@@ -100,8 +79,8 @@ def _cmd_sum(args: argparse.Namespace) -> int:
 def _cmd_inflate(args: argparse.Namespace) -> int:
     if (status := run_features(args, "inflate")) is not None:  # FeatureCollections, DXF
         return status
-    from .convex import cspace_obstacle
-    from .io import format_geometry, read_geometry
+    from ..convex import cspace_obstacle
+    from ..io import format_geometry, read_geometry
 
     result = cspace_obstacle(
         read_geometry(args.obstacle), read_geometry(args.robot), hull=args.hull
@@ -113,8 +92,8 @@ def _cmd_inflate(args: argparse.Namespace) -> int:
 def _cmd_hull(args: argparse.Namespace) -> int:
     if (status := run_features(args, "hull")) is not None:  # FeatureCollections, DXF
         return status
-    from .convex import convex_hull
-    from .io import format_geometry, read_geometry
+    from ..convex import convex_hull
+    from ..io import format_geometry, read_geometry
 
     result = convex_hull(read_geometry(args.points))
     emit(format_geometry(result, output_format(args)), args.output, [args.points])
@@ -123,7 +102,7 @@ def _cmd_hull(args: argparse.Namespace) -> int:
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser with every subcommand registered."""
-    from . import __version__
+    from .. import __version__
 
     parser = argparse.ArgumentParser(
         prog="minkowski2d",
@@ -159,14 +138,27 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_hull)
 
     for name in _PLUGINS:
-        try:
-            mod = importlib.import_module(name)
-        except ModuleNotFoundError as exc:
-            if exc.name is not None and name.startswith(exc.name):
-                continue
-            raise
-        mod.add_parser(sub)
+        importlib.import_module(name).add_parser(sub)
+    p = sub.add_parser(
+        "completion",
+        help="print a shell completion script (bash or zsh)",
+        description='Print a completion script: eval "$(minkowski2d completion bash)" '
+        "in ~/.bashrc, or minkowski2d completion zsh > ~/.zfunc/_minkowski2d.",
+    )
+    p.add_argument("shell", choices=("bash", "zsh"), help="the shell")
+    p.set_defaults(func=_cmd_completion)
     return parser
+
+
+def _cmd_completion(args: argparse.Namespace) -> int:
+    try:
+        import shtab
+    except ImportError:
+        raise CLIError(
+            "shell completion needs shtab", hint="pip install shtab (or minkowski2d[test])"
+        ) from None
+    sys.stdout.write(shtab.complete(build_parser(), shell=args.shell))
+    return 0
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -181,7 +173,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     ...
     0
     """
-    from .errors import GeometryError
+    from ..errors import GeometryError
 
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -195,7 +187,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         return 130
     except Exception as exc:  # the last line of defence: foreign errors from bad data
-        from ._engine.foreign import translate
+        from .._engine.foreign import translate
 
         err = translate(exc, "", "running the command")
         if err is None:

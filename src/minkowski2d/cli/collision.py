@@ -30,7 +30,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         help="intersection test: boundary walk of A ⊕ (−B), exact GJK, or auto (default)",
     )
     p.add_argument("-o", "--output", help="output file (default: standard output)")
-    from ._cli_common import add_arc_option
+    from .common import add_arc_option
 
     add_arc_option(p)
     p.set_defaults(func=_cmd_collide)
@@ -43,7 +43,7 @@ def _xy(v: Any) -> list[float]:
 def _convex_input(g: Any, name: str) -> Any:
     import numpy as np
 
-    from .errors import NotConvexError
+    from ..errors import NotConvexError
 
     if not isinstance(g, np.ndarray):
         raise NotConvexError(
@@ -55,7 +55,7 @@ def _convex_input(g: Any, name: str) -> Any:
 
 
 def _collide(a: Any, b: Any, args: argparse.Namespace) -> dict:
-    from .collision import distance, intersects, penetration
+    from ..collision import distance, intersects, penetration
 
     hit = intersects(a, b, method=args.method, hull=args.hull)
     d = distance(a, b, hull=args.hull)
@@ -79,10 +79,10 @@ def _collide(a: Any, b: Any, args: argparse.Namespace) -> dict:
 def _cmd_collide(args: argparse.Namespace) -> int:
     import numpy as np
 
-    from ._cli_common import CLI_HULL_HINT, emit, renamed_error
-    from ._cli_features import run_collection
-    from .errors import NotConvexError
-    from .io import read_geometry
+    from ..errors import NotConvexError
+    from ..io import read_geometry
+    from .common import CLI_HULL_HINT, emit, renamed_error
+    from .features import run_collection
 
     def op(geoms: list, names: list) -> Any:
         # one feature per pair: the properties of both, the results, and as geometry the

@@ -1,8 +1,8 @@
 """What every ``minkowski2d`` subcommand shares: writing its output safely, the output
 options, and the one-line error report.
 
-The plugin modules (:mod:`minkowski2d._cli_collision`, :mod:`minkowski2d._cli_general`,
-:mod:`minkowski2d.animation.cli`) import from here, not from :mod:`minkowski2d.cli`.
+The plugin modules (:mod:`minkowski2d.cli.collision`, :mod:`minkowski2d.cli.general`,
+:mod:`minkowski2d.cli.animation`) import from here, not from :mod:`minkowski2d.cli`.
 
 Writing (:func:`emit`) never loses a file:
 
@@ -27,7 +27,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from .errors import GeometryError
+from ..errors import GeometryError
 
 __all__ = [
     "CLIError",
@@ -80,7 +80,7 @@ def same_file(a: str, b: str) -> bool:
     >>> same_file(f + "#1", os.path.join(d, ".", "two.dat"))
     True
     """
-    from .io import split_selector
+    from ..io import split_selector
 
     a, _ = split_selector(a)
     b, _ = split_selector(b)
@@ -159,7 +159,7 @@ def emit(text: str, output: str | None, inputs: Iterable[str] = ()) -> None:
 
 def add_io_options(p: argparse.ArgumentParser) -> None:
     """``-o/--output``, ``--format`` and ``--arc-tolerance``."""
-    from .io import FORMATS
+    from ..io import FORMATS
 
     p.add_argument("-o", "--output", help="output file (default: standard output)")
     p.add_argument(
@@ -183,12 +183,27 @@ def add_arc_option(p: argparse.ArgumentParser) -> None:
     )
 
 
-def output_format(args: argparse.Namespace) -> str:
-    """The chosen format, or the one the output suffix names, or json."""
+def output_format(args: argparse.Namespace, formats: Iterable[str] | None = None) -> str:
+    """The chosen format, or the one the output suffix names (among ``formats``, by
+    default :data:`minkowski2d.io.FORMATS`), or json."""
     if getattr(args, "format", None):
         return args.format
+    if formats is None:
+        from ..io import FORMATS as formats
     suffix = Path(args.output).suffix.lower() if args.output else ""
-    return {".wkt": "wkt", ".geojson": "geojson", ".svg": "svg"}.get(suffix, "json")
+    return suffix[1:] if suffix[1:] in formats else "json"
+
+
+def is_general(g: Any, name: str) -> bool:
+    """True when ``g`` (as read by :func:`minkowski2d.io.read_geometry`) needs the
+    general (non-convex / holes) sum; validates ``g``."""
+    import numpy as np
+
+    from .._engine.dispatch import check_convex
+
+    if not isinstance(g, np.ndarray):
+        return True  # shapely Polygon with holes or MultiPolygon
+    return not check_convex(g, name)
 
 
 def renamed_error(
@@ -217,7 +232,7 @@ def renamed_error(
     >>> str(r), r.argument, r.vertex, r.hint
     ('star.json: not convex at vertex 2', 'star.json', 2, 'use --hull to use the convex hull')
     """
-    from .errors import NotConvexError
+    from ..errors import NotConvexError
 
     hint = exc.hint
     if hull_hint is not None and isinstance(exc, NotConvexError):
@@ -268,16 +283,3 @@ def format_error(exc: BaseException) -> str:
     if hint and hint not in msg:
         msg = f"{msg} (hint: {hint})"
     return f"minkowski2d: error: {_one_line(msg)}"
-
-
-def describe(exc: Any) -> dict[str, object]:
-    """A JSON-ready mapping of any error this package reports (``to_dict`` fields)."""
-    if isinstance(exc, GeometryError):
-        return exc.to_dict()
-    return {
-        "type": type(exc).__name__,
-        "message": str(exc),
-        "argument": None,
-        "vertex": None,
-        "hint": getattr(exc, "hint", None),
-    }

@@ -36,8 +36,8 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
 def _cmd_nfp(args: argparse.Namespace) -> int:
     import shapely
 
-    from ._cli_common import emit
-    from .nesting import inner_fit_polygon, no_fit_polygons, read_esicup, rotate_part
+    from ..nesting import inner_fit_polygon, no_fit_polygons, read_esicup, rotate_part
+    from .common import emit
 
     fmt = args.format
     if fmt is None:

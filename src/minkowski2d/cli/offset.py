@@ -8,10 +8,13 @@ from __future__ import annotations
 import argparse
 import io
 import sys
-from pathlib import Path
 from typing import Any
 
-FORMATS = ("json", "geojson", "wkt", "svg", "dxf")
+from .. import io as _io
+from .common import output_format
+
+#: the library's output formats, and DXF (written here, with exact arcs)
+FORMATS = (*_io.FORMATS, "dxf")
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -40,7 +43,7 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--join", choices=("round", "miter", "square"), default="round")
     p.add_argument("--miter-limit", type=float, default=2.0)
     p.add_argument("-o", "--output", help="output file (default: standard output)")
-    from ._cli_common import add_arc_option
+    from .common import add_arc_option
 
     add_arc_option(p)
     p.add_argument(
@@ -52,36 +55,14 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
     p.set_defaults(func=_cmd_offset)
 
 
-def _format(args: argparse.Namespace) -> str:
-    if args.format:
-        return args.format
-    suffix = Path(args.output).suffix.lower() if args.output else ""
-    return {".wkt": "wkt", ".geojson": "geojson", ".svg": "svg", ".dxf": "dxf"}.get(suffix, "json")
-
-
-def read_dxf(source: str, tolerance: float | None = None) -> Any:
-    """The parts of a DXF drawing (:func:`minkowski2d.io.read_dxf`: closed polylines,
-    circles, line and arc chains; nested outlines are holes; arcs within ``tolerance``)
-    as one shapely geometry."""
-    import shapely
-
-    from .io import read_dxf as read
-
-    geoms = []
-    for f in read(source, tolerance=tolerance):
-        g = f.geometry
-        geoms.append(g if not hasattr(g, "ndim") else shapely.Polygon(g))
-    return geoms[0] if len(geoms) == 1 else shapely.MultiPolygon(geoms)
-
-
 def _cmd_offset(args: argparse.Namespace) -> int:
-    from ._cli_common import emit
-    from ._cli_features import run_collection
-    from .errors import GeometryError
-    from .io import format_geometry, read_geometry
+    from ..errors import GeometryError
+    from ..io import format_geometry, read_geometry
+    from .common import emit
+    from .features import run_collection
 
     src = args.polygon
-    fmt = _format(args)
+    fmt = output_format(args, FORMATS)
     exact = fmt in ("svg", "dxf") and args.join == "round" and args.tolerance is None
 
     def op(g: list, names: list) -> Any:
@@ -112,7 +93,7 @@ def _cmd_offset(args: argparse.Namespace) -> int:
 def _offset(poly: Any, args: argparse.Namespace, exact: bool) -> Any:
     """The offset of one polygon: exact arcs (OffsetArcs) for an exact SVG or DXF, else
     a polygon within the tolerance (the default one when none is given)."""
-    from .offset import offset, offset_arcs
+    from ..offset import offset, offset_arcs
 
     if exact:
         arcs = offset_arcs(poly, args.distance)
@@ -138,7 +119,7 @@ def _text(results: list, fmt: str, exact: bool, distance: float) -> str:
     import shapely
 
     if exact:
-        from .offset import OffsetArcs
+        from ..offset import OffsetArcs
 
         arcs = OffsetArcs([p for r in results for p in r.polygons], distance)
         if fmt == "svg":
@@ -151,7 +132,7 @@ def _text(results: list, fmt: str, exact: bool, distance: float) -> str:
     geom = parts[0] if len(parts) == 1 else shapely.MultiPolygon(list(parts))
     if fmt == "dxf":
         return _polygon_dxf(geom)
-    from .io import format_geometry
+    from ..io import format_geometry
 
     return format_geometry(geom, fmt)
 
@@ -160,7 +141,7 @@ def _polygon_dxf(geom: Any) -> str:
     """A polygon result as closed LWPOLYLINEs (exteriors counter-clockwise)."""
     import shapely
 
-    from .errors import InputFormatError
+    from ..errors import InputFormatError
 
     try:
         import ezdxf

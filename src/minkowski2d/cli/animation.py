@@ -38,7 +38,7 @@ def read_polygon(arg: str, name: str) -> Any:
     [(0, 0), (2, 0), (0, 2)]
     """
     if _is_inline(arg):
-        from .page import parse_points
+        from ..animation.page import parse_points
 
         return parse_points(arg, name)
     from ..io import read_geometry
@@ -48,8 +48,8 @@ def read_polygon(arg: str, name: str) -> Any:
 
 def _cli_hint(exc: Exception) -> Exception:
     """The same error, pointing to --hull instead of the page's or library's advice."""
-    from .._cli_common import CLI_HULL_HINT, renamed_error
     from ..errors import GeometryError
+    from .common import CLI_HULL_HINT, renamed_error
 
     if isinstance(exc, GeometryError):
         return renamed_error(exc, hull_hint=CLI_HULL_HINT)
@@ -65,9 +65,9 @@ def _cspace_args(args: argparse.Namespace) -> dict:
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:
-    from .._cli_common import emit
+    from ..animation.page import render
     from ..errors import GeometryError
-    from .page import render
+    from .common import emit
 
     a = read_polygon(args.a, "A")
     b = read_polygon(args.b, "B")
@@ -87,10 +87,10 @@ def _cmd_animate(args: argparse.Namespace) -> int:
 
 
 def _cmd_serve(args: argparse.Namespace) -> int:
-    from .._cli_common import CLIError
+    from ..animation.page import SEED_A, SEED_B
+    from ..animation.server import AnimationServer
     from ..errors import GeometryError
-    from .page import SEED_A, SEED_B
-    from .server import AnimationServer
+    from .common import CLIError
 
     if (args.a is None) != (args.b is None):
         raise CLIError("serve: give both polygons A and B, or neither (for the seed's example)")

@@ -22,23 +22,12 @@ from __future__ import annotations
 
 import argparse
 import json
-import sys
 from collections.abc import Callable
 from typing import Any
 
-from ._cli_common import CLIError, emit, output_format
+from .common import emit, is_general, output_format
 
-__all__ = ["run_features", "run_collection", "write_collection", "arc_tolerance", "add_parser"]
-
-
-def _is_general(g: Any, name: str) -> bool:
-    import numpy as np
-
-    from ._engine.dispatch import check_convex
-
-    if not isinstance(g, np.ndarray):
-        return True
-    return not check_convex(g, name)
+__all__ = ["run_features", "run_collection", "write_collection", "arc_tolerance"]
 
 
 def _neg(g: Any) -> Any:
@@ -54,7 +43,7 @@ def _neg(g: Any) -> Any:
 def _op(cmd: str, a: Any, b: Any, hull: bool, names: tuple[str, str]) -> Any:
     import numpy as np
 
-    from . import convex, general
+    from .. import convex, general
 
     if cmd == "hull":
         if not isinstance(a, np.ndarray):  # holes or several parts: the hull of all
@@ -63,10 +52,10 @@ def _op(cmd: str, a: Any, b: Any, hull: bool, names: tuple[str, str]) -> Any:
             a = shapely.get_coordinates(a)
         return convex.convex_hull(a)
     if cmd == "inflate":
-        if not hull and (_is_general(a, names[0]) or _is_general(b, names[1])):
+        if not hull and (is_general(a, names[0]) or is_general(b, names[1])):
             return general.minkowski_sum_general(a, _neg(b))
         return convex.cspace_obstacle(a, b, hull=hull)
-    if not hull and (_is_general(a, names[0]) or _is_general(b, names[1])):
+    if not hull and (is_general(a, names[0]) or is_general(b, names[1])):
         return general.minkowski_sum_general(a, b)
     return convex.minkowski_sum(a, b, hull=hull)
 
@@ -124,8 +113,8 @@ def run_collection(
     fmt)``, when given, writes formats of its own (``dxf``, an exact ``svg``; None: the
     default), else :func:`write_collection` does; ``fmt`` defaults to ``--format`` or
     the ``-o`` suffix."""
-    from .errors import GeometryError, ShapeError
-    from .io import Feature, read_features, read_geometry
+    from ..errors import GeometryError, ShapeError
+    from ..io import Feature, read_features, read_geometry
 
     if any(f == "-" for f in files):
         return None  # standard input is read once, by the single-polygon path
@@ -180,13 +169,13 @@ def run_collection(
 def write_collection(out: list, fmt: str) -> str:
     """The results ``(geometry or None, properties, extra)`` as a FeatureCollection
     (``json``, ``geojson``), one WKT per line (``wkt``) or one SVG drawing (``svg``)."""
-    from .io import format_geometry
+    from ..io import format_geometry
 
     return _format(out, fmt, format_geometry)
 
 
 def _name(exc: Any, names: Any) -> Any:
-    from ._cli_common import CLI_HULL_HINT, renamed_error
+    from .common import CLI_HULL_HINT, renamed_error
 
     mapping = dict.fromkeys(_ARGS[0], names[0])
     mapping.update(dict.fromkeys(_ARGS[1], names[-1]))
@@ -218,32 +207,3 @@ def _format(out: list, fmt: str, format_geometry: Any) -> str:
         geom = None if g is None else json.loads(format_geometry(g, "geojson"))
         feats.append({"type": "Feature", **extra, "geometry": geom, "properties": props})
     return json.dumps({"type": "FeatureCollection", "features": feats})
-
-
-# --------------------------------------------------------------------------------------
-# minkowski2d completion bash|zsh
-
-
-def _cmd_completion(args: argparse.Namespace) -> int:
-    try:
-        import shtab
-    except ImportError:
-        raise CLIError(
-            "shell completion needs shtab", hint="pip install shtab (or minkowski2d[test])"
-        ) from None
-    from .cli import build_parser
-
-    sys.stdout.write(shtab.complete(build_parser(), shell=args.shell))
-    return 0
-
-
-def add_parser(sub: Any) -> None:
-    """Register ``completion``."""
-    p = sub.add_parser(
-        "completion",
-        help="print a shell completion script (bash or zsh)",
-        description='Print a completion script: eval "$(minkowski2d completion bash)" '
-        "in ~/.bashrc, or minkowski2d completion zsh > ~/.zfunc/_minkowski2d.",
-    )
-    p.add_argument("shell", choices=("bash", "zsh"), help="the shell")
-    p.set_defaults(func=_cmd_completion)

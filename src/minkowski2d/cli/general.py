@@ -11,8 +11,8 @@ import sys
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
     """Add the ``sum-general``, ``erode`` and ``decompose`` subcommands."""
-    from ._cli_common import add_io_options
-    from .general import DECOMPOSITIONS, SUM_METHODS
+    from ..general import DECOMPOSITIONS, SUM_METHODS
+    from .common import add_io_options
 
     p = subparsers.add_parser(
         "sum-general",
@@ -55,10 +55,10 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
 
 
 def _cmd_sum_general(args: argparse.Namespace) -> int:
-    from ._cli_common import emit, files_named, output_format
-    from ._cli_features import run_collection
-    from .general import minkowski_sum_general
-    from .io import format_geometry, read_geometry
+    from ..general import minkowski_sum_general
+    from ..io import format_geometry, read_geometry
+    from .common import emit, files_named, output_format
+    from .features import run_collection
 
     def op(g: list, names: list) -> object:
         return minkowski_sum_general(
@@ -76,10 +76,10 @@ def _cmd_sum_general(args: argparse.Namespace) -> int:
 
 
 def _cmd_erode(args: argparse.Namespace) -> int:
-    from ._cli_common import emit, files_named, output_format
-    from ._cli_features import run_collection
-    from .general import minkowski_difference
-    from .io import format_geometry, read_geometry
+    from ..general import minkowski_difference
+    from ..io import format_geometry, read_geometry
+    from .common import emit, files_named, output_format
+    from .features import run_collection
 
     def op(g: list, names: list) -> object:
         return minkowski_difference(g[0], g[1])
@@ -99,7 +99,7 @@ def _cmd_erode(args: argparse.Namespace) -> int:
 def _pieces_geom(poly: object, method: str) -> object:
     import shapely
 
-    from .general import convex_decomposition
+    from ..general import convex_decomposition
 
     pieces = convex_decomposition(poly, method=method)
     polys = [p for p in pieces.to_shapely() if p.geom_type == "Polygon"]
@@ -107,9 +107,9 @@ def _pieces_geom(poly: object, method: str) -> object:
 
 
 def _cmd_decompose(args: argparse.Namespace) -> int:
-    from ._cli_common import emit, files_named, output_format
-    from ._cli_features import run_collection
-    from .io import format_geometry, read_geometry
+    from ..io import format_geometry, read_geometry
+    from .common import emit, files_named, output_format
+    from .features import run_collection
 
     def op(g: list, names: list) -> object:
         return _pieces_geom(g[0], args.method)
