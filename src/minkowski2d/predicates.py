@@ -105,41 +105,6 @@ def _cross(pts: tuple[Any, ...], names: tuple[str, ...]) -> int:
     return (d > 0) - (d < 0)
 
 
-# Private helpers other modules (convex.py) call with coordinates of one known kind.
-
-
-def _sgn(v: Any) -> int:
-    return (v > 0) - (v < 0)
-
-
-def _cross_exact(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
-    """Sign of (a1 - a0) x (b1 - b0) in the inputs' own arithmetic (ints, Fractions)."""
-    d = (a1[0] - a0[0]) * (b1[1] - b0[1]) - (a1[1] - a0[1]) * (b1[0] - b0[0])
-    return (d > 0) - (d < 0)
-
-
-def _cross_float(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
-    """Exact sign of (a1 - a0) x (b1 - b0) for finite float coordinates (the core)."""
-    return core.cross_sign_f(
-        float(a0[0]),
-        float(a0[1]),
-        float(a1[0]),
-        float(a1[1]),
-        float(b0[0]),
-        float(b0[1]),
-        float(b1[0]),
-        float(b1[1]),
-    )
-
-
-def _cross_fraction(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
-    """Exact sign of (a1 - a0) x (b1 - b0) in rational arithmetic (floats, ints,
-    Fractions)."""
-    e = [_exact(v, n) for p, n in zip((a0, a1, b0, b1), ("a0", "a1", "b0", "b1")) for v in p]
-    d = (e[2] - e[0]) * (e[7] - e[5]) - (e[3] - e[1]) * (e[6] - e[4])
-    return (d > 0) - (d < 0)
-
-
 def cross_sign(a0: Any, a1: Any, b0: Any, b1: Any) -> int:
     """Exact sign of the cross product ``(a1 - a0) x (b1 - b0)``.
 

@@ -32,7 +32,6 @@ from . import core
 INT, FLOAT, EXACT = "int", "float", "exact"
 #: floats next to ints beyond 2**53: exact decisions (Fractions), float output
 XFLOAT = "xfloat"
-_RANK = {INT: 0, FLOAT: 1, XFLOAT: 2, EXACT: 3}
 
 _F53 = core.FLOAT_EXACT_INT
 INT64_MAX = (1 << 63) - 1
@@ -262,32 +261,3 @@ def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray
     if dk == "b":
         raise CoordinateTypeError(f"{name}: coordinates are bools; use numbers")
     raise CoordinateTypeError(f"{name}: coordinates of dtype {arr.dtype} are not real numbers")
-
-
-def coerce(obj: Any, name: str, tiny: int) -> tuple[Any, str, bool]:
-    """Dispatch to the pure-Python form (small or exact input) or the array form.
-
-    Returns ``(data, kind, is_list)``: ``data`` is a list of tuples when ``is_list``,
-    otherwise an (n, 2) ndarray.
-    """
-    t = type(obj)
-    if (t is list or t is tuple) and len(obj) <= tiny:
-        pts, kind = py_points(obj, name)
-        return pts, kind, True
-    if (
-        t is np.ndarray
-        and obj.ndim == 2
-        and obj.shape[0] <= tiny
-        and obj.dtype.kind in "if"
-        and obj.dtype.itemsize <= 8
-    ):
-        if obj.shape[1] != 2:
-            raise ShapeError(f"{name}: expected shape (n, 2), got {obj.shape}")
-        if obj.shape[0] == 0:
-            raise EmptyGeometryError(f"{name}: empty input (no vertices)")
-        pts, kind = py_points([tuple(r) for r in obj.tolist()], name)
-        return pts, kind, True
-    data, kind = as_array(obj, name, check_finite=False)
-    if isinstance(data, list):
-        return data, kind, True
-    return data, kind, False
