@@ -340,7 +340,7 @@ def test_general_many_large_parts():
 
 @needs_data
 def test_auto_switches_to_the_convolution_on_curved_parts(monkeypatch):
-    import minkowski2d.general as general
+    import minkowski2d.general.sums as general
 
     d = instance("gardeyn0")
     A, B = d["parts"][3], mk.rotate_part(d["parts"][3], 180)  # 2 304 sums, 170 crossings

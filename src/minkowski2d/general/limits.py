@@ -1,0 +1,16 @@
+"""The work limits of one general sum (each a ResourceLimitError when exceeded). Set them on
+the package (``minkowski2d.general.MAX_PIECE_PAIRS = n``): the package forwards the value
+here, where the code reads it at each call."""
+
+__all__ = ["MAX_PIECE_PAIRS", "MAX_CONVOLUTION_SEGMENTS", "MAX_CROSSINGS"]
+
+#: Work limits of one pair (each a ResourceLimitError when exceeded):
+#: ``MAX_PIECE_PAIRS`` convex piece sums (pieces of A times pieces of B) for the
+#: decomposition ...
+MAX_PIECE_PAIRS = 1 << 21
+#: ... ``MAX_CONVOLUTION_SEGMENTS`` segments of the convolution ...
+MAX_CONVOLUTION_SEGMENTS = 1 << 22
+#: ... and ``MAX_CROSSINGS`` crossings noded by the exact overlay, over all its runs
+#: (about 150 bytes each). The 2048-vertex stars of the benchmark need the decomposition;
+#: their convolution has 10**6 segments and far more crossings.
+MAX_CROSSINGS = 1 << 21
