@@ -1,0 +1,537 @@
+"""Offsetting to a polygon with a one-sided, guaranteed error (:func:`offset`): the input
+read, one compiled call per polygon or batch, its status codes as errors."""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from .._engine import options as _options
+from .._engine.coerce import as_array
+from .._engine.containers import is_many
+from ..errors import (
+    EmptyGeometryError,
+    GeometryError,
+    NonFiniteError,
+    OverflowGeometryError,
+    ResourceLimitError,
+    ShapeError,
+)
+
+#: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
+#: (raised to the least tolerance float64 can guarantee at the input's magnitude when
+#: that is larger).
+DEFAULT_TOLERANCE = 1e-3
+
+APPROX = ("outer", "inner")
+JOINS = ("round", "miter", "square")
+_JOIN_CODE = {"round": 0, "miter": 1, "square": 2}
+
+
+# --------------------------------------------------------------------------------------
+# input
+
+
+class _Input(NamedTuple):
+    """One polygonal set for the core: rings (closing repeats allowed), which rings are
+    holes, whether overlapping parts must be united first, and a bound on the distance
+    between these float64 rings and the caller's exact input."""
+
+    xy: np.ndarray  # (N, 2) float64
+    ring_off: np.ndarray  # (R + 1,) int64
+    hole: np.ndarray  # (R,) int64
+    unite: bool
+    delta: float
+
+
+def _finite_float(v: Any, name: str) -> float:
+    return _options.real(v, name)
+
+
+_HINT = "repair it: the boundary must not cross itself, holes must lie inside"
+_NONFINITE_HINT = "remove NaN and inf"
+
+
+def _flat(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Coordinates (closing repeats kept), ring offsets and polygon offsets of shapely
+    Polygons (empty ones dropped)."""
+    import shapely
+
+    if len(geoms) == 1 and shapely.lib.get_num_interior_rings(geoms[0]) == 0:
+        xy = shapely.get_coordinates(geoms[0])
+        return xy, np.array([0, len(xy)], np.int64), _GEOM1
+    rings, part = shapely.get_rings(geoms, return_index=True)
+    xy = shapely.get_coordinates(rings)
+    ring_off = np.zeros(len(rings) + 1, np.int64)
+    np.cumsum(shapely.get_num_coordinates(rings), out=ring_off[1:])
+    starts = np.r_[0, np.flatnonzero(np.diff(part)) + 1]  # each polygon's shell
+    poly_off = np.r_[starts, len(rings)].astype(np.int64)
+    return np.ascontiguousarray(xy, np.float64), ring_off, poly_off
+
+
+def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
+    """Rings checked exactly by the core (the check of ``_polygon.check``: simple rings,
+    holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
+    by the core before offsetting (``unite``; for a MultiPolygon, found by the same
+    check)."""
+    from .._engine import core
+
+    verdict = core.check_polygons_f(xy, ring_off, poly_off, False)
+    if verdict[0]:
+        from .._engine.polygon import Rings, problem_error
+
+        raise problem_error(
+            *verdict[:4], Rings(xy, ring_off, poly_off), name, _HINT,
+            nonfinite_hint=_NONFINITE_HINT,
+        )  # fmt: skip
+    if not unite and len(poly_off) > 2 and core.check_polygons_f(xy, ring_off, poly_off, True)[0]:
+        unite = True  # a MultiPolygon whose valid parts overlap or share edges
+    if len(ring_off) == 2:
+        return _Input(xy, ring_off, _ZERO1, unite, 0.0)
+    hole = np.ones(len(ring_off) - 1, np.int64)
+    hole[poly_off[:-1]] = 0
+    return _Input(xy, ring_off, hole, unite, 0.0)
+
+
+def _shapely_input(geom: Any, name: str) -> _Input:
+    """A shapely ring, polygon, multipolygon or collection of them, validated."""
+    import shapely
+
+    gt = geom.geom_type
+    if gt == "LinearRing":
+        geom = shapely.Polygon(geom)
+        gt = "Polygon"
+    unite = False
+    if gt == "GeometryCollection":
+        parts = shapely.get_parts(geom)
+        if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
+            raise ShapeError(
+                f"{name}: a GeometryCollection may hold only polygons",
+                argument=name,
+                hint="pass the polygons only",
+            )
+        polys = shapely.get_parts(parts)
+        unite = len(polys) > 1
+    elif gt == "Polygon":
+        if geom.is_empty:
+            raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
+        return _validated(*_flat([geom]), name, False)
+    elif gt == "MultiPolygon":
+        polys = shapely.get_parts(geom)
+    else:
+        raise ShapeError(
+            f"{name}: cannot offset a {gt} here (give a polygon, a ring or an (n, 2) array)",
+            argument=name,
+            hint="pass the coordinates as an (n, 2) array for a point or a segment",
+        )
+    polys = polys[~shapely.is_empty(polys)]
+    if len(polys) == 0:
+        raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
+    return _validated(*_flat(polys), name, unite)
+
+
+#: constant arrays of the single-polygon call
+_ZERO1 = np.zeros(1, np.int64)
+_ZEROF1 = np.zeros(1, np.float64)
+_GEOM1 = np.array([0, 1], np.int64)
+_POLYGON = 3  # shapely.GeometryType.POLYGON
+
+
+def _one_ring(data: np.ndarray, delta: float) -> _Input:
+    return _Input(
+        np.ascontiguousarray(data, np.float64),
+        np.array([0, len(data)], np.int64),
+        _ZERO1,
+        False,
+        delta,
+    )
+
+
+def _rounding_error(exact: list, data: np.ndarray) -> float:
+    """An upper bound on the distance between each exact vertex and its float64 value."""
+    worst = Fraction(0)
+    for (x, y), (fx, fy) in zip(exact, data.tolist()):
+        worst = max(worst, abs(Fraction(x) - Fraction(fx)), abs(Fraction(y) - Fraction(fy)))
+    # sqrt(2) < 1.5, and float() of a Fraction rounds to nearest
+    return float(worst) * 1.5
+
+
+def _read(obj: Any, name: str) -> _Input:
+    """The rings of a polygon (any orientation: the core orients them exactly), or a ring
+    of one or two vertices for a point or a segment."""
+    import shapely
+
+    if type(obj).__module__.startswith("shapely"):
+        if obj.geom_type in ("Point", "LineString", "MultiPoint"):
+            obj = shapely.get_coordinates(obj)
+        else:
+            return _shapely_input(obj, name)
+    data, _kind = as_array(obj, name)
+    delta = 0.0
+    if isinstance(data, list):  # Fractions or huge ints: rounded to float64 once
+        exact = data
+        try:
+            data = np.array([(float(Fraction(x)), float(Fraction(y))) for x, y in data])
+        except OverflowError:
+            data = None
+        if data is None or not np.isfinite(data).all():
+            raise OverflowGeometryError(
+                f"{name}: a coordinate does not fit in float64",
+                argument=name,
+                hint="scale the input down",
+            )
+        delta = _rounding_error(exact, data)
+    data = np.asarray(data, dtype=np.float64)
+    if len(data) > 1 and (data[0] == data[-1]).all():
+        data = data[:-1]
+    if not np.isfinite(data).all():
+        raise NonFiniteError(
+            f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
+        )
+    from .._engine.polygon import Invalid, probe, rings_of_array
+
+    rings = rings_of_array(data)
+    if len(data) >= 3:
+        status, reason = probe(rings)[:2]
+        if status == 0:
+            return _one_ring(data, delta)  # the common case: a valid ring (exact check)
+        if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
+            _validated(*rings, name, False)  # raises the core's verdict
+    # a point, a segment, or collinear points: a degenerate convex set
+    from ..convex import convex_hull
+
+    return _one_ring(np.asarray(convex_hull(data), dtype=np.float64), delta)
+
+
+# --------------------------------------------------------------------------------------
+# the core call
+
+
+def _distance_error(distance: Any, d: float) -> float:
+    """How far the float64 distance is from the caller's exact one (ints, Fractions)."""
+    if isinstance(distance, (float, np.floating)) or d == 0:
+        return 0.0
+    try:
+        return float(abs(Fraction(distance) - Fraction(d))) * 1.5
+    except (TypeError, ValueError):
+        return 0.0
+
+
+def _run(
+    inputs: list[_Input],
+    d: float,
+    tol: float | None,
+    approx: str,
+    join: str,
+    lim: float,
+    extra_delta: float = 0.0,
+    labels: bool = False,
+) -> tuple:
+    """One compiled call for all ``inputs``: the raw result of ``core.offset_rings``."""
+    from .._engine import core
+
+    if len(inputs) == 1:
+        a = inputs[0]
+        xy, ro, hole = a.xy, a.ring_off, a.hole
+        go = _GEOM1 if len(ro) == 2 else np.array([0, len(ro) - 1], np.int64)
+    else:
+        xy = np.concatenate([a.xy for a in inputs]) if inputs else np.empty((0, 2))
+        nv = np.cumsum([0] + [len(a.xy) for a in inputs[:-1]])
+        ro = np.concatenate([[0]] + [a.ring_off[1:] + s for a, s in zip(inputs, nv)])
+        hole = np.concatenate([a.hole for a in inputs]) if inputs else np.empty(0, np.int64)
+        go = np.cumsum([0] + [len(a.ring_off) - 1 for a in inputs])
+    if len(inputs) == 1 and not inputs[0].unite and inputs[0].delta + extra_delta == 0:
+        unite, delta = _ZERO1, _ZEROF1
+    else:
+        unite = np.fromiter((a.unite for a in inputs), np.int64, len(inputs))
+        delta = np.fromiter((a.delta + extra_delta for a in inputs), np.float64, len(inputs))
+    if xy.dtype != np.float64 or not xy.flags.c_contiguous:
+        xy = np.ascontiguousarray(xy, np.float64)
+    return core.offset_rings(
+        xy,
+        ro,
+        hole,
+        go,
+        unite,
+        delta,
+        d,
+        math.nan if tol is None else tol,
+        DEFAULT_TOLERANCE,
+        approx == "outer",
+        _JOIN_CODE[join],
+        lim,
+        labels,
+        1,
+    )
+
+
+def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
+    """Turn the core's verdict on one polygon into the documented error."""
+    from .._engine import core
+
+    if code == core.OFFSET_TOLERANCE:
+        raise GeometryError(
+            f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
+            f"magnitudes (about {least:.3g})",
+            argument="tolerance",
+            hint="raise the tolerance, or move the polygon nearer to the origin",
+        )
+    if code == core.OFFSET_DISTANCE:
+        raise GeometryError(
+            f"distance: {distance!r} is too small for float64 at these magnitudes (the "
+            f"least tolerance it can guarantee, about {least:.3g}, is more than half of it)",
+            argument="distance",
+            hint="move the polygon nearer to the origin, or offset by more",
+        )
+    if code == core.OFFSET_UNDERFLOW:
+        raise OverflowGeometryError(
+            "result: the offset underflows float64 (magnitude below 2**-1020: rounding to "
+            "float64 may exceed the guaranteed tolerance)",
+            argument="result",
+            hint="scale the input up by a power of two, and the result down",
+        )
+    if status == core.Status.RESOURCE:
+        raise ResourceLimitError(
+            "polygon: the offset's overlay would exceed its work limit",
+            argument="polygon",
+            hint="offset fewer vertices at once, or with a coarser tolerance",
+        )
+    if code == core.OFFSET_OVERFLOWS or status == core.Status.OVERFLOW:
+        raise OverflowGeometryError(
+            "result: the offset does not fit in float64 (a coordinate is infinite)",
+            argument="result",
+            hint="scale the input down (or offset by a smaller distance)",
+        )
+    if code != core.OFFSET_FINE or status != core.Status.OK:
+        raise GeometryError(
+            f"polygon: the offset could not be certified (code {code}, status {status})",
+            argument="polygon",
+            hint="this is a bug: please report the input",
+        )
+
+
+def _shapes(res: tuple, distance: Any, tolerance: Any) -> list:
+    """Shapely results, one per polygonal set of the call (errors raised in order)."""
+    import shapely
+
+    xy, ro, po, go, info, _extra = res
+    if info[:, :2].any():
+        for g in range(len(go) - 1):
+            st, cd, least = info[g, :3].tolist()
+            _raise_for(int(cd), int(st), least, distance, tolerance)
+    if len(go) == 2 and len(po) == 2:  # one polygon of one ring or more
+        return [shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))[0]]
+    polys = (
+        shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
+        if len(po) > 1
+        else np.empty(0, object)
+    )
+    out = []
+    for g in range(len(go) - 1):
+        k0, k1 = int(go[g]), int(go[g + 1])
+        if k1 == k0:
+            out.append(shapely.Polygon())
+        elif k1 == k0 + 1:
+            out.append(polys[k0])
+        else:
+            out.append(shapely.MultiPolygon(list(polys[k0:k1])))
+    return out
+
+
+# --------------------------------------------------------------------------------------
+# the offset
+
+
+def _list_result(res: list) -> np.ndarray:
+    out = np.empty(len(res), dtype=object)
+    out[:] = res
+    return out
+
+
+def _batch(polys: list, fn_args: tuple) -> list:
+    """Offsets of a list of polygons (None stays None): one compiled call."""
+    d, tol, approx, join, lim, distance, tolerance = fn_args
+    idx = [k for k, g in enumerate(polys) if g is not None]
+    inputs = [_read(polys[k], "polygon") for k in idx]
+    out: list = [None] * len(polys)
+    if inputs:
+        res = _run(inputs, d, tol, approx, join, lim, _distance_error(distance, d))
+        for k, g in zip(idx, _shapes(res, distance, tolerance)):
+            out[k] = g
+    return out
+
+
+def _map(polygon: Any, fn_args: tuple) -> Any:
+    """Offset one polygon, or each polygon of a container (same kind out)."""
+    if not is_many(polygon, empty=False):
+        return _batch([polygon], fn_args)[0]
+    from .._engine.containers import apply, boxed
+
+    if boxed(polygon):
+        # GeoSeries / GeometryArray / object arrays: the shared container rules
+        return apply(
+            lambda ps: _list_result(_batch(list(ps), fn_args)),
+            polygon,
+            convex=False,
+            names=("polygon",),
+        )
+    # lists and tuples of polygons (containers went through _containers above)
+    res = _batch(list(polygon), fn_args)
+    if isinstance(polygon, np.ndarray):
+        return _list_result(res)
+    return tuple(res) if isinstance(polygon, tuple) else res
+
+
+def _check_options(distance, tolerance, approx, join, miter_limit):
+    if (
+        type(distance) is float
+        and (tolerance is None or type(tolerance) is float)
+        and approx in APPROX
+        and join in JOINS
+        and type(approx) is str
+        and type(join) is str
+        and math.isfinite(distance)
+        and (tolerance is None or (math.isfinite(tolerance) and tolerance > 0))
+        and (type(miter_limit) in (float, int) and math.isfinite(miter_limit) and miter_limit >= 1)
+    ):
+        return distance, tolerance, float(miter_limit)  # the common case, already checked
+    d = _finite_float(distance, "distance")
+    _options.choice(approx, "approx", APPROX)
+    _options.choice(join, "join", JOINS)
+    lim = _finite_float(miter_limit, "miter_limit")
+    if lim < 1.0:
+        raise GeometryError(
+            f"miter_limit: must be at least 1, got {miter_limit!r}",
+            argument="miter_limit",
+            hint="a miter limit of 1 bevels every corner at the offset distance",
+        )
+    tol = None
+    if tolerance is not None:
+        tol = _finite_float(tolerance, "tolerance")
+        if tol <= 0:
+            raise GeometryError(
+                f"tolerance: must be positive, got {tolerance!r}",
+                argument="tolerance",
+                hint="e.g. 1e-3 times the distance",
+            )
+        if not isinstance(tolerance, (float, np.floating)) and Fraction(tol) > Fraction(tolerance):
+            tol = math.nextafter(tol, 0.0)  # never a looser tolerance than the one asked for
+    return d, tol, lim
+
+
+def offset(
+    polygon: Any,
+    distance: float,
+    *,
+    tolerance: float | None = None,
+    approx: str = "outer",
+    join: str = "round",
+    miter_limit: float = 2.0,
+) -> Any:
+    """Grow (``distance > 0``) or shrink (``distance < 0``) a polygon by a disk, with a
+    guaranteed one-sided error.
+
+    Parameters
+    ----------
+    polygon : (n, 2) array_like, shapely Polygon / MultiPolygon, or a container of them
+        A convex or simple ring (either orientation), a polygon with holes, or a
+        multipolygon; ints, floats or Fractions. A point or a segment (an array of one or
+        two points, or collinear points) grows into a disk or a stadium. A list, tuple,
+        numpy object array, GeometryArray or GeoSeries of polygons is offset member by
+        member in one compiled call and the same kind of container is returned (None
+        stays None).
+    distance : float
+        The tool radius ``r = |distance|``: positive grows, negative shrinks (a shrink
+        may erase parts or split a polygon into several), zero returns the polygon.
+    tolerance : float, optional
+        The largest error ``ε > 0`` (in the input's units) of a round join; unused by
+        miter and square joins. Default (None): :data:`DEFAULT_TOLERANCE` ``· |r|`` =
+        ``1e-3 · |r|``, or the least tolerance float64 can guarantee at the input's
+        magnitude when that is larger (about ``2**-43 · r + 2**-46 · max |x|``). The
+        one-sided guarantee below holds for the tolerance used, given or default.
+    approx : {"outer", "inner"}
+        Which side of the true set the result lies on (see Returns).
+    join : {"round", "miter", "square"}
+        ``"round"``: the disk offset. ``"miter"``: the moved edges are extended to meet;
+        a corner whose miter point lies farther than ``miter_limit · r`` from its vertex
+        is cut off there, square to the bisector. ``"square"``: every convex corner is
+        cut off at distance ``r`` from its vertex, square to the bisector.
+    miter_limit : float
+        See ``join``; at least 1.
+
+    Returns
+    -------
+    shapely.Polygon or shapely.MultiPolygon
+        Valid, exteriors counter-clockwise and holes clockwise, each ring from its least
+        (x, y) vertex; an empty Polygon when a shrink erases everything. For
+        ``join="round"`` and ``approx="outer"``: a grow satisfies
+        ``P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + ε)`` and a shrink
+        ``P ⊖ D(r) ⊆ result ⊆ P ⊖ D(r − ε)``; for ``approx="inner"``:
+        ``P ⊕ D(r − ε) ⊆ result ⊆ P ⊕ D(r)`` and ``P ⊖ D(r + ε) ⊆ result ⊆ P ⊖ D(r)``.
+        Each arc of exterior angle ``θ`` gets ``ceil(θ / φ)`` corners (outer; ``φ`` from
+        ``r (1/cos(φ/2) − 1) ≤ ε``) or ``ceil(θ / φ) + 1`` vertices (inner; ``φ`` from
+        ``r (1 − cos(φ/2)) ≤ ε``). Miter and square joins are polygons computed in
+        float64 (``approx`` and ``tolerance`` unused).
+
+    Raises
+    ------
+    GeometryError
+        ``distance``, ``tolerance`` or ``miter_limit`` is not a finite number in range
+        (``argument`` names which), or the tolerance is below what float64 can guarantee
+        at the input's magnitude.
+    OverflowGeometryError
+        The result does not fit in float64, or its magnitude is below ``2**-1020``.
+    SelfIntersectionError, ShapeError, EmptyGeometryError, NonFiniteError
+        Bad polygon.
+
+    See Also
+    --------
+    offset_arcs : the exact boundary as segments and circular arcs.
+
+    Notes
+    -----
+    One compiled call: O(n + V) curve vertices (V the arc vertices), certified by exact
+    predicates in O(n + V), then one exact overlay, O((n + V + k) log(n + V)) for k
+    crossings of the curve (where gaps, slots and holes close). Every decision is an
+    exact sign; see ``docs/offset.md``.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk
+    >>> tri = [(0, 0), (4, 0), (0, 3)]
+    >>> g = mk.offset(tri, 1, tolerance=1e-3)
+    >>> h = mk.offset(tri, 1, tolerance=1e-3, approx="inner")
+    >>> h.within(g), h.area < 6 + 12 + 3.14159 < g.area  # area + perimeter + π r²
+    (True, True)
+    >>> mk.offset(tri, -0.5, tolerance=1e-3).geom_type
+    'Polygon'
+    >>> mk.offset([(0, 0), (2, 0), (2, 2), (0, 2)], 1, tolerance=None, join="miter").wkt
+    'POLYGON ((-1 -1, 3 -1, 3 3, -1 3, -1 -1))'
+    """
+    d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
+    if not is_many(polygon, empty=False):
+        # one polygon: the shortest way through
+        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim,
+                   _distance_error(distance, d))  # fmt: skip
+        return _shapes(res, distance, tolerance)[0]
+    return _map(polygon, (d, tol, approx, join, lim, distance, tolerance))
+
+
+def _check_underflow(big: float) -> None:
+    """Refuse results whose magnitude ``big`` is so small that rounding them to float64
+    (to multiples of 2**-1074) may exceed the margin that keeps the error on its side:
+    an OverflowGeometryError (an underflow), never a result off its side."""
+    if 0.0 < big < _UNDERFLOW:
+        raise OverflowGeometryError(
+            f"result: the offset underflows float64 (magnitude {big!r}: rounding to float64 "
+            "may exceed the guaranteed tolerance)",
+            argument="result",
+            hint="scale the input up by a power of two, and the result down",
+        )
+
+
+#: Results of a smaller magnitude cannot keep the one-sided guarantee in float64.
+_UNDERFLOW = 2.0**-1020
