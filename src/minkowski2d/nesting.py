@@ -306,6 +306,29 @@ def no_fit_polygons(
     # None stays None: every NFP of a missing part
     todo = [key for key in keys if key[0] not in missing and key[2] not in missing]
 
+    job_list, plan, oriented = _plan_jobs(parts, rot, todo)
+    As = [a for a, _ in job_list]
+    Bs = [b for _, b in job_list]
+    if not job_list:
+        return dict.fromkeys(keys)
+    try:
+        res = minkowski_sum_general_many(As, Bs, progress=progress, threads=threads)
+    except GeometryError as exc:
+        raise _rename(exc, As, Bs, oriented) from exc
+    if keep_degenerate:
+        res = np.array(
+            [_with_degenerate(g, a, b) for g, a, b in zip(res, As, Bs, strict=True)],
+            dtype=object,
+        )
+    out = _turned(res, plan)
+    return {key: out.get(key) for key in keys}
+
+
+def _plan_jobs(parts: list, rot: list, todo: list) -> tuple[list, list, dict]:
+    """The distinct sums to compute, ``job_list`` ((A, −B) pairs), and for each requested
+    key ``(i, ri, j, rj)`` its job and the quarter turns that take the job's NFP to it
+    (``plan``). Multiples of 90 degrees share one canonical job per unordered pair and
+    relative rotation; ``oriented`` caches the rotated (and reflected) parts."""
     # canonical jobs: (i, rotation of A, j, rotation of B's reflection) -> requests
     oriented: dict[tuple, Any] = {}
 
@@ -345,19 +368,11 @@ def no_fit_polygons(
                 job_list.append((part_at(i, ri), oriented[(j, "reflected", rj)]))
             plan.append((key, jobs[jk], 0))
 
-    As = [a for a, _ in job_list]
-    Bs = [b for _, b in job_list]
-    if not job_list:
-        return dict.fromkeys(keys)
-    try:
-        res = minkowski_sum_general_many(As, Bs, progress=progress, threads=threads)
-    except GeometryError as exc:
-        raise _rename(exc, As, Bs, oriented) from exc
-    if keep_degenerate:
-        res = np.array(
-            [_with_degenerate(g, a, b) for g, a, b in zip(res, As, Bs, strict=True)],
-            dtype=object,
-        )
+    return job_list, plan, oriented
+
+
+def _turned(res: Any, plan: list) -> dict[tuple, Any]:
+    """Each requested key's NFP: its job's result turned by its quarter turns."""
     out: dict[tuple, Any] = {}
     turns = np.array([t for _, _, t in plan], np.int64)
     idx = np.array([k for _, k, _ in plan], np.int64)
@@ -368,7 +383,7 @@ def no_fit_polygons(
         g = _rotate_geoms(res[idx[sel]], t)
         for s, gg in zip(sel, g, strict=True):
             out[plan[s][0]] = gg
-    return {key: out.get(key) for key in keys}
+    return out
 
 
 def _parts(parts: Any) -> list:

@@ -34,6 +34,76 @@ def _exact(v: float) -> Fraction:
     return Fraction(v)
 
 
+def _cr(ux, uy, vx, vy):
+    return ux * vy - uy * vx
+
+
+def _upper(dx, dy):
+    return dy > 0 or (dy == 0 and dx > 0)
+
+
+def _before(u, v):
+    """True when direction u comes strictly before v in the angle order from +x."""
+    hu, hv = _upper(*u), _upper(*v)
+    if hu != hv:
+        return hu
+    return _cr(u[0], u[1], v[0], v[1]) > 0
+
+
+def _inter(l1, l2):
+    (p1, d1), (p2, d2) = l1, l2
+    den = _cr(d1[0], d1[1], d2[0], d2[1])
+    t = Fraction(_cr(p2[0] - p1[0], p2[1] - p1[1], d2[0], d2[1])) / den
+    return (p1[0] + d1[0] * t, p1[1] + d1[1] * t)
+
+
+def _side(ln, p):
+    (q, d) = ln
+    return _cr(d[0], d[1], p[0] - q[0], p[1] - q[1])  # > 0 inside (left), 0 on the line
+
+
+def _support_lines(Ae: list, Be: list) -> list:
+    """A's edge lines pushed inward by B's support vertex, as (point, direction) with the
+    half-plane on the left. Edges of both are in angle order from the bottom-most vertex,
+    so one pointer walks B while A's edges turn (a merge)."""
+    n, m = len(Ae), len(Be)
+    Bedges = (
+        [(Be[(j + 1) % m][0] - Be[j][0], Be[(j + 1) % m][1] - Be[j][1]) for j in range(m)]
+        if m > 1
+        else []
+    )
+    lines = []
+    j = 0
+    for i in range(n):
+        ex = Ae[(i + 1) % n][0] - Ae[i][0]
+        ey = Ae[(i + 1) % n][1] - Ae[i][1]
+        # advance j while B's edge j comes before A's edge i (support moves on)
+        while m > 1 and j < m and _before(Bedges[j], (ex, ey)):
+            j += 1
+        b = Be[j % m] if m > 1 else Be[0]
+        lines.append(((Ae[i][0] - b[0], Ae[i][1] - b[1]), (ex, ey)))
+    return lines
+
+
+def _boxed(lines: list, Ae: list, Be: list) -> list:
+    """The lines with the four sides of a box around A - B[0] (which contains the
+    erosion) merged into the angle order: the deque algorithm is only correct while the
+    partial intersection stays bounded."""
+    xs = [p[0] - Be[0][0] for p in Ae]
+    ys = [p[1] - Be[0][1] for p in Ae]
+    x0, x1, y0, y1 = min(xs) - 1, max(xs) + 1, min(ys) - 1, max(ys) + 1
+    box = [((x0, y0), (1, 0)), ((x1, y0), (0, 1)), ((x1, y1), (-1, 0)), ((x0, y1), (0, -1))]
+    merged: list = []
+    k = 0
+    for ln in lines:
+        while k < 4 and not _before(ln[1], box[k][1]):
+            merged.append(box[k])
+            k += 1
+        merged.append(ln)
+    merged.extend(box[k:])
+    return merged
+
+
 def _erode_convex(A: np.ndarray, B: np.ndarray) -> Any:
     """Exact erosion of convex A by convex B (both normalized CCW; B may be flat).
 
@@ -43,106 +113,57 @@ def _erode_convex(A: np.ndarray, B: np.ndarray) -> Any:
     """
     import shapely
 
-    n, m = len(A), len(B)
     Ae = [(_exact(x), _exact(y)) for x, y in A.tolist()]
     Be = [(_exact(x), _exact(y)) for x, y in B.tolist()]
-    if n < 3:
+    if len(A) < 3:
         raise ShapeError("a: a convex polygon with area is needed")
-
-    def cr(ux, uy, vx, vy):
-        return ux * vy - uy * vx
-
-    # support vertex of B for each edge of A: edges of both are in angle order from the
-    # bottom-most vertex, so one pointer walks B while A's edges turn (a merge)
-    def upper(dx, dy):
-        return dy > 0 or (dy == 0 and dx > 0)
-
-    def before(u, v):
-        """True when direction u comes strictly before v in the angle order from +x."""
-        hu, hv = upper(*u), upper(*v)
-        if hu != hv:
-            return hu
-        return cr(u[0], u[1], v[0], v[1]) > 0
-
-    Bedges = (
-        [(Be[(j + 1) % m][0] - Be[j][0], Be[(j + 1) % m][1] - Be[j][1]) for j in range(m)]
-        if m > 1
-        else []
-    )
-    lines = []  # (point on line, direction): the half-plane is on the left
-    j = 0
-    for i in range(n):
-        ex = Ae[(i + 1) % n][0] - Ae[i][0]
-        ey = Ae[(i + 1) % n][1] - Ae[i][1]
-        # advance j while B's edge j comes before A's edge i (support moves on)
-        while m > 1 and j < m and before(Bedges[j], (ex, ey)):
-            j += 1
-        b = Be[j % m] if m > 1 else Be[0]
-        lines.append(((Ae[i][0] - b[0], Ae[i][1] - b[1]), (ex, ey)))
-
-    def inter(l1, l2):
-        (p1, d1), (p2, d2) = l1, l2
-        den = cr(d1[0], d1[1], d2[0], d2[1])
-        t = Fraction(cr(p2[0] - p1[0], p2[1] - p1[1], d2[0], d2[1])) / den
-        return (p1[0] + d1[0] * t, p1[1] + d1[1] * t)
-
-    def side(ln, p):
-        (q, d) = ln
-        return cr(d[0], d[1], p[0] - q[0], p[1] - q[1])  # > 0 inside (left), 0 on the line
-
-    # Half-plane intersection of lines sorted by angle (the deque algorithm). It is only
-    # correct while the partial intersection stays bounded, so the four sides of a box
-    # around A - B[0] (which contains the erosion) are merged into the angle order.
-    xs = [p[0] - Be[0][0] for p in Ae]
-    ys = [p[1] - Be[0][1] for p in Ae]
-    x0, x1, y0, y1 = min(xs) - 1, max(xs) + 1, min(ys) - 1, max(ys) + 1
-    box = [((x0, y0), (1, 0)), ((x1, y0), (0, 1)), ((x1, y1), (-1, 0)), ((x0, y1), (0, -1))]
-    merged: list = []
-    k = 0
-    for ln in lines:
-        while k < 4 and not before(ln[1], box[k][1]):
-            merged.append(box[k])
-            k += 1
-        merged.append(ln)
-    merged.extend(box[k:])
-
+    lines = _support_lines(Ae, Be)
+    # half-plane intersection of the lines sorted by angle (the deque algorithm)
     dq: list = []
-    for ln in merged:
-        while len(dq) >= 2 and side(ln, inter(dq[-2], dq[-1])) < 0:
+    for ln in _boxed(lines, Ae, Be):
+        while len(dq) >= 2 and _side(ln, _inter(dq[-2], dq[-1])) < 0:
             dq.pop()
-        while len(dq) >= 2 and side(ln, inter(dq[0], dq[1])) < 0:
+        while len(dq) >= 2 and _side(ln, _inter(dq[0], dq[1])) < 0:
             dq.pop(0)
         if dq:
             d0, d1 = dq[-1][1], ln[1]
-            if cr(d0[0], d0[1], d1[0], d1[1]) == 0:
+            if _cr(d0[0], d0[1], d1[0], d1[1]) == 0:
                 if d0[0] * d1[0] + d0[1] * d1[1] < 0:  # antiparallel after popping
-                    s = side(ln, dq[-1][0])
+                    s = _side(ln, dq[-1][0])
                     if s < 0:
                         return shapely.Polygon()  # the strip between them is empty
                     if s == 0:
-                        return _on_line(ln, lines, side, cr)  # zero width: segment or point
+                        return _on_line(ln, lines, _side, _cr)  # zero width: segment or point
                     return shapely.Polygon()
                 # same direction: keep the more restrictive of the two
-                if side(ln, dq[-1][0]) < 0:
+                if _side(ln, dq[-1][0]) < 0:
                     dq.pop()
                 else:
                     continue
         dq.append(ln)
-    while len(dq) >= 3 and side(dq[0], inter(dq[-2], dq[-1])) < 0:
+    while len(dq) >= 3 and _side(dq[0], _inter(dq[-2], dq[-1])) < 0:
         dq.pop()
-    while len(dq) >= 3 and side(dq[-1], inter(dq[0], dq[1])) < 0:
+    while len(dq) >= 3 and _side(dq[-1], _inter(dq[0], dq[1])) < 0:
         dq.pop(0)
+    return _polygon_of(dq, lines)
+
+
+def _polygon_of(dq: list, lines: list) -> Any:
+    """The erosion from the deque's lines: a polygon, or (decided exactly against every
+    half-plane) a segment, a point or nothing."""
+    import shapely
+
     if len(dq) < 3:
         return shapely.Polygon()
     pts = []
     for k in range(len(dq)):
         l1, l2 = dq[k], dq[(k + 1) % len(dq)]
-        if cr(l1[1][0], l1[1][1], l2[1][0], l2[1][1]) == 0:
-            s = side(l2, l1[0])
+        if _cr(l1[1][0], l1[1][1], l2[1][0], l2[1][1]) == 0:
+            s = _side(l2, l1[0])
             if s < 0:
                 return shapely.Polygon()
-            return _on_line(l1, lines, side, cr)
-        pts.append(inter(l1, l2))
+            return _on_line(l1, lines, _side, _cr)
+        pts.append(_inter(l1, l2))
     # A candidate without area (lines through one point, or all vertices on a line) can
     # survive the strict cleanup although other half-planes exclude it: decide those
     # exactly against every half-plane.
@@ -150,12 +171,12 @@ def _erode_convex(A: np.ndarray, B: np.ndarray) -> Any:
     p0 = uniq[0]
     far = max(uniq, key=lambda p: abs(p[0] - p0[0]) + abs(p[1] - p0[1]))
     if far == p0:
-        if all(side(ln, p0) >= 0 for ln in lines):
+        if all(_side(ln, p0) >= 0 for ln in lines):
             return _from_exact_points([p0])
         return shapely.Polygon()
     d = (far[0] - p0[0], far[1] - p0[1])
-    if all(cr(d[0], d[1], p[0] - p0[0], p[1] - p0[1]) == 0 for p in uniq):
-        return _on_line((p0, d), lines, side, cr)
+    if all(_cr(d[0], d[1], p[0] - p0[0], p[1] - p0[1]) == 0 for p in uniq):
+        return _on_line((p0, d), lines, _side, _cr)
     return _from_exact_points(pts)
 
 

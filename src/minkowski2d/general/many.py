@@ -132,13 +132,32 @@ def minkowski_sum_general_many(
             argument="As, Bs",
         )
     P = len(la) if many_a else len(lb)
+    preps, todo, ia, ib, names = _pairs(la, lb, many_a, many_b, P)
     out = np.empty(P, dtype=object)
+    m = None if method == "auto" else method
+    bar = _progress_bar(progress, len(todo))
+    try:
+        step = max(1, -(-len(todo) // 64)) if progress else max(1, len(todo))
+        A_, B_ = np.asarray(ia, np.int64), np.asarray(ib, np.int64)
+        for s in range(0, len(todo), step):
+            sel = slice(s, s + step)
+            res = _sums(preps, A_[sel], B_[sel], names[sel], m, threads=threads)
+            for q, g in zip(todo[sel], res, strict=True):
+                out[q] = g
+            bar(len(res))
+    finally:
+        bar(None)
+    return out
+
+
+def _pairs(la: list, lb: list, many_a: bool, many_b: bool, P: int) -> tuple:
+    """Each distinct operand read once (the same Python object counts once): ``(preps,
+    todo, ia, ib, names)``, the pairs to sum (``None`` on a side: skipped) as indices into
+    ``preps`` with the names their errors use (``As[k]``, or ``a`` when broadcast)."""
     na = (lambda q: f"As[{q}]") if many_a else (lambda q: "a")
     nb = (lambda q: f"Bs[{q}]") if many_b else (lambda q: "b")
     ga = (lambda q: la[q]) if many_a else (lambda q: la[0])
     gb = (lambda q: lb[q]) if many_b else (lambda q: lb[0])
-
-    cache: dict[int, _Prepared] = {}
     index: dict[int, int] = {}
     preps: list[_Prepared] = []
 
@@ -164,21 +183,7 @@ def minkowski_sum_general_many(
         ia.append(i)
         ib.append(j)
         names.append((na(q), nb(q)))
-    del cache
-    bar = _progress_bar(progress, len(todo))
-    m = None if method == "auto" else method
-    try:
-        step = max(1, -(-len(todo) // 64)) if progress else max(1, len(todo))
-        A_, B_ = np.asarray(ia, np.int64), np.asarray(ib, np.int64)
-        for s in range(0, len(todo), step):
-            sel = slice(s, s + step)
-            res = _sums(preps, A_[sel], B_[sel], names[sel], m, threads=threads)
-            for q, g in zip(todo[sel], res, strict=True):
-                out[q] = g
-            bar(len(res))
-    finally:
-        bar(None)
-    return out
+    return preps, todo, ia, ib, names
 
 
 def _single(a: Any, b: Any, name_a: str, name_b: str, method: str | None = None) -> Any:

@@ -88,67 +88,118 @@ def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list
     from .._engine import options as _options
 
     _options.choice(layout, "layout", ("auto", "polygons", "pwh"))
-    matches = list(re.finditer(r"\S+", text))
-    toks = [m.group() for m in matches]
-    pos = 0
+    t = _Tokens(text, name)
+    n1 = t.count("the vertex count")
+    first = t.ring(n1, "polygon 1")
+    if t.left() == 0:
+        if n1 == 0:
+            raise EmptyGeometryError(f"{name}: no vertices", argument=name)
+        return [first]
+    k_at = t.pos
+    k = t.count("the second polygon or the holes")
+    if layout == "polygons" or (layout == "auto" and k > 0 and t.left() == 2 * k):
+        second = t.ring(k, "polygon 2")
+        t.at_end()
+        for r, which in ((first, 1), (second, 2)):
+            if len(r) == 0:
+                raise EmptyGeometryError(f"{name}: polygon {which} has no vertices", argument=name)
+        return [first, second]
+    holes = []
+    for h in range(k):
+        at = t.pos
+        hole = t.ring(t.count(f"hole {h} vertex count"), f"hole {h}")
+        t.boundary(hole, f"hole {h}", at)
+        holes.append(hole)
+    t.at_end()
+    if n1 == 0:
+        return [UnboundedPolygon(holes)]
+    t.boundary(first, "the outer boundary of a polygon with holes", 0)
+    import shapely
 
-    def line(k: int) -> int:
-        return (
-            text.count("\n", 0, matches[k].start()) + 1
-            if k < len(matches)
-            else (text.count("\n") + 1)
-        )
+    try:
+        return [shapely.Polygon(first, holes)]
+    except Exception as exc:  # shapely: a ring that closes on itself too early, ...
+        raise t.fail(f"not a polygon with holes ({_short(str(exc))})", k_at) from None
 
-    def fail(msg: str, k: int | None = None, vertex: int | None = None) -> InputFormatError:
-        where = f"line {line(k)}: " if k is not None else ""
+
+class _Tokens:
+    """The whitespace-separated tokens of a ``.dat`` text, read front to back; errors name
+    the file (``name``), the line and the vertex."""
+
+    def __init__(self, text: str, name: str) -> None:
+        self.text = text
+        self.name = name
+        self.matches = list(re.finditer(r"\S+", text))
+        self.toks = [m.group() for m in self.matches]
+        self.pos = 0
+
+    def left(self) -> int:
+        return len(self.toks) - self.pos
+
+    def line(self, k: int) -> int:
+        if k < len(self.matches):
+            return self.text.count("\n", 0, self.matches[k].start()) + 1
+        return self.text.count("\n") + 1
+
+    def fail(self, msg: str, k: int | None = None, vertex: int | None = None) -> InputFormatError:
+        where = f"line {self.line(k)}: " if k is not None else ""
         return InputFormatError(
-            f"{name}: {where}{msg}", argument=name, vertex=vertex, hint=_CGAL_HINT
+            f"{self.name}: {where}{msg}", argument=self.name, vertex=vertex, hint=_CGAL_HINT
         )
 
-    def take(what: str) -> str:
-        nonlocal pos
-        if pos >= len(toks):
-            raise fail(f"file ends early (expected {what})")
-        pos += 1
-        return toks[pos - 1]
+    def at_end(self) -> None:
+        if self.pos != len(self.toks):
+            raise self.fail(f"{len(self.toks) - self.pos} unexpected tokens at the end", self.pos)
 
-    def count(what: str) -> int:
-        t = take(what)
+    def take(self, what: str) -> str:
+        if self.pos >= len(self.toks):
+            raise self.fail(f"file ends early (expected {what})")
+        self.pos += 1
+        return self.toks[self.pos - 1]
+
+    def count(self, what: str) -> int:
+        t = self.take(what)
         if not _INT_TOKEN.match(t) or t.startswith("-"):
-            raise fail(f"expected a count for {what}, found {_short(t)}", pos - 1)
+            raise self.fail(f"expected a count for {what}, found {_short(t)}", self.pos - 1)
         try:
             return int(t)
         except ValueError:
-            raise fail(f"the count for {what} has too many digits", pos - 1) from None
+            raise self.fail(f"the count for {what} has too many digits", self.pos - 1) from None
 
-    def ring(n: int, what: str) -> np.ndarray:
-        nonlocal pos
-        left = len(toks) - pos
+    def boundary(self, r: np.ndarray, what: str, k: int) -> None:
+        if len(r) < 3:
+            raise self.fail(f"{what} has {len(r)} vertices; a ring needs at least 3", k)
+
+    def ring(self, n: int, what: str) -> np.ndarray:
+        """``n`` vertices: int64, exact Python ints beyond it, or float64 when a coordinate
+        is not an integer."""
+        left = self.left()
         if 2 * n > left:
-            raise fail(
+            raise self.fail(
                 f"file ends early: {what} has {n} vertices but only {left} numbers follow",
-                pos - 1,
+                self.pos - 1,
             )
+        start = self.pos
         vals: list = []
         for j in range(2 * n):
-            t = toks[pos + j]
+            t = self.toks[start + j]
             try:
                 vals.append(_cgal_number(t))
             except ValueError as exc:
-                raise fail(
-                    f"{what} vertex {j // 2}: {_short(t)} is {exc}", pos + j, vertex=j // 2
+                raise self.fail(
+                    f"{what} vertex {j // 2}: {_short(t)} is {exc}", start + j, vertex=j // 2
                 ) from None
-        start = pos
-        pos += 2 * n
+        self.pos += 2 * n
         if any(isinstance(v, (float, Fraction)) for v in vals):
             out = []
             for j, v in enumerate(vals):
                 try:
                     out.append(float(v))
                 except OverflowError:
-                    raise fail(
-                        f"{what} vertex {j // 2}: {_short(toks[start + j])} is beyond the float "
-                        "range (the ring has non-integer coordinates, so it is read as floats)",
+                    raise self.fail(
+                        f"{what} vertex {j // 2}: {_short(self.toks[start + j])} is beyond the "
+                        "float range (the ring has non-integer coordinates, so it is read as "
+                        "floats)",
                         start + j,
                         vertex=j // 2,
                     ) from None
@@ -159,46 +210,6 @@ def parse_cgal_dat(text: str, name: str = "input", layout: str = "auto") -> list
             arr = np.empty((n, 2), dtype=object)
             arr[:] = [(vals[2 * i], vals[2 * i + 1]) for i in range(n)]
             return arr
-
-    def boundary(r: np.ndarray, what: str, k: int) -> None:
-        if len(r) < 3:
-            raise fail(f"{what} has {len(r)} vertices; a ring needs at least 3", k)
-
-    n1 = count("the vertex count")
-    first = ring(n1, "polygon 1")
-    rest = len(toks) - pos
-    if rest == 0:
-        if n1 == 0:
-            raise EmptyGeometryError(f"{name}: no vertices", argument=name)
-        return [first]
-    k_at = pos
-    k = count("the second polygon or the holes")
-    rest = len(toks) - pos
-    if layout == "polygons" or (layout == "auto" and k > 0 and rest == 2 * k):
-        second = ring(k, "polygon 2")
-        if pos != len(toks):
-            raise fail(f"{len(toks) - pos} unexpected tokens at the end", pos)
-        for r, which in ((first, 1), (second, 2)):
-            if len(r) == 0:
-                raise EmptyGeometryError(f"{name}: polygon {which} has no vertices", argument=name)
-        return [first, second]
-    holes = []
-    for h in range(k):
-        at = pos
-        hole = ring(count(f"hole {h} vertex count"), f"hole {h}")
-        boundary(hole, f"hole {h}", at)
-        holes.append(hole)
-    if pos != len(toks):
-        raise fail(f"{len(toks) - pos} unexpected tokens at the end", pos)
-    if n1 == 0:
-        return [UnboundedPolygon(holes)]
-    boundary(first, "the outer boundary of a polygon with holes", 0)
-    import shapely
-
-    try:
-        return [shapely.Polygon(first, holes)]
-    except Exception as exc:  # shapely: a ring that closes on itself too early, ...
-        raise fail(f"not a polygon with holes ({_short(str(exc))})", k_at) from None
 
 
 def read_cgal_dat(source: str | Path, layout: str = "auto") -> list:

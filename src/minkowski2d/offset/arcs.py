@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -387,25 +387,29 @@ def _nearest(pts, A0, U, L, VS, VE, reach: float, chunk: int = 64) -> tuple:
     return lab, dist
 
 
-def _trace(
-    items: list,
-    rings: list[np.ndarray],
-    r: float,
-    sign: float,
-    slack: float,
-    repairs: int = _MAX_REPAIRS,
-) -> tuple[list, bool]:
-    """Exact rings of segments and arcs.
+class _Frame(NamedTuple):
+    """The polygon's features for tracing: vertices ``V``; edges from ``A0`` to ``A1``
+    (vertex ids ``VS``, ``VE``; length ``L``, unit direction ``U``) moved by ``r`` to
+    ``MA0``-``MA1``; each vertex's exterior angle on the offset side (``theta``, 0 where
+    it is not convex) and the angle where its arc starts (``alpha_in``)."""
 
-    ``items``: polygons, each a list of rings ``(coords, labels)`` tracing the offset
-    (``labels`` per segment: the moved edge ``e`` (>= 0) or the arc of vertex ``v``
-    (``-1 - v``) it lies on, from the core's overlay; None to label each segment by the
-    nearest feature). ``rings``: the polygon's rings with the offset side on their right
-    (moved by ``r``); ``sign``: +1 when the arcs turn counter-clockwise (a grow), -1 (a
-    shrink); ``slack``: the verification's resolution.
-    """
-    from .._engine import core
+    V: np.ndarray
+    A0: np.ndarray
+    A1: np.ndarray
+    VS: np.ndarray
+    VE: np.ndarray
+    L: np.ndarray
+    U: np.ndarray
+    MA0: np.ndarray
+    MA1: np.ndarray
+    theta: np.ndarray
+    alpha_in: np.ndarray
+    r: float
+    sign: float
+    slack: float
 
+
+def _frame(rings: list[np.ndarray], r: float, sign: float, slack: float) -> _Frame:
     starts, ends, vid_s, vid_e = [], [], [], []
     base = 0
     for ring in rings:
@@ -435,144 +439,192 @@ def _trace(
         np.arctan2(ui[:, 0] * uo[:, 1] - ui[:, 1] * uo[:, 0], (ui * uo).sum(axis=1)), 0.0
     )
     alpha_in = np.arctan2(N[ein, 1], N[ein, 0])  # where each vertex's arc starts
-    verified = [True]
-    big = max(float(np.abs(V).max()), r)
-    tiny = ARC_STRAIGHT_ULPS * math.ulp(big)
+    return _Frame(V, A0, A1, VS, VE, L, U, MA0, MA1, theta, alpha_in, r, sign, slack)
 
-    def extents(la, J, strict=False):
-        """Each piece's extent, negative when it runs backwards: along its moved edge
-        (a shrink's rings run against the reversed rings' edges), or the room left in
-        its vertex's exterior angle for an arc. ``strict``: also negative when the piece
-        leaves its moved edge's segment or its arc's normal cone."""
-        J1 = np.roll(J, -1, 0)
-        ext = np.full(len(la), np.inf)
-        ln = la >= 0
-        e = la[ln]
-        t0 = ((J[ln] - MA0[e]) * U[e]).sum(axis=1)
-        t1 = ((J1[ln] - MA0[e]) * U[e]).sum(axis=1)
-        ext[ln] = sign * (t1 - t0) + slack
+
+def _extents(F: _Frame, la: np.ndarray, J: np.ndarray, strict: bool = False) -> np.ndarray:
+    """Each piece's extent, negative when it runs backwards: along its moved edge (a
+    shrink's rings run against the reversed rings' edges), or the room left in its
+    vertex's exterior angle for an arc. ``strict``: also negative when the piece leaves
+    its moved edge's segment or its arc's normal cone."""
+    r, sign, slack = F.r, F.sign, F.slack
+    J1 = np.roll(J, -1, 0)
+    ext = np.full(len(la), np.inf)
+    ln = la >= 0
+    e = la[ln]
+    t0 = ((J[ln] - F.MA0[e]) * F.U[e]).sum(axis=1)
+    t1 = ((J1[ln] - F.MA0[e]) * F.U[e]).sum(axis=1)
+    ext[ln] = sign * (t1 - t0) + slack
+    if strict:
+        lo, hi = np.minimum(t0, t1), np.maximum(t0, t1)
+        ext[ln] = np.minimum(ext[ln], np.minimum(lo + slack, F.L[e] + slack - hi))
+    ar = ~ln
+    if ar.any():
+        v = -1 - la[ar]
+        ctr = F.V[v]
+        a0 = np.arctan2(J[ar, 1] - ctr[:, 1], J[ar, 0] - ctr[:, 0])
+        a1 = np.arctan2(J1[ar, 1] - ctr[:, 1], J1[ar, 0] - ctr[:, 0])
+        sw = np.mod(sign * (a1 - a0), 2 * math.pi)
+        # a closed full turn (one arc alone) has sweep 0 here: fine
+        ext[ar] = F.theta[v] + slack / r - sw
         if strict:
-            lo, hi = np.minimum(t0, t1), np.maximum(t0, t1)
-            ext[ln] = np.minimum(ext[ln], np.minimum(lo + slack, L[e] + slack - hi))
-        ar = ~ln
-        if ar.any():
-            v = -1 - la[ar]
-            ctr = V[v]
-            a0 = np.arctan2(J[ar, 1] - ctr[:, 1], J[ar, 0] - ctr[:, 0])
-            a1 = np.arctan2(J1[ar, 1] - ctr[:, 1], J1[ar, 0] - ctr[:, 0])
-            sw = np.mod(sign * (a1 - a0), 2 * math.pi)
-            # a closed full turn (one arc alone) has sweep 0 here: fine
-            ext[ar] = theta[v] + slack / r - sw
-            if strict:
-                first = a0 if sign > 0 else a1  # the end nearer the incoming normal
-                off = np.mod(first - alpha_in[v] + slack / r, 2 * math.pi) - slack / r
-                ext[ar] = np.minimum(ext[ar], theta[v] + slack / r - (off + sw))
-        return ext
+            first = a0 if sign > 0 else a1  # the end nearer the incoming normal
+            off = np.mod(first - F.alpha_in[v] + slack / r, 2 * math.pi) - slack / r
+            ext[ar] = np.minimum(ext[ar], F.theta[v] + slack / r - (off + sw))
+    return ext
 
-    def nearest(pts):
-        """Label of the nearest feature (edge interior or vertex) and its distance."""
-        return _nearest(pts, A0, U, L, VS, VE, 2 * r)
 
+def _nearest_feature(F: _Frame, pts: np.ndarray) -> tuple:
+    """Label of the nearest feature (edge interior or vertex) and its distance."""
+    return _nearest(pts, F.A0, F.U, F.L, F.VS, F.VE, 2 * F.r)
+
+
+def _junctions_of(F: _Frame, labels: list, near: np.ndarray) -> np.ndarray:
+    return _junctions(np.array(labels), near, F.MA0, F.MA1, F.U, F.V, F.VS, F.VE, F.r, F.sign)
+
+
+def _trace(
+    items: list,
+    rings: list[np.ndarray],
+    r: float,
+    sign: float,
+    slack: float,
+    repairs: int = _MAX_REPAIRS,
+) -> tuple[list, bool]:
+    """Exact rings of segments and arcs.
+
+    ``items``: polygons, each a list of rings ``(coords, labels)`` tracing the offset
+    (``labels`` per segment: the moved edge ``e`` (>= 0) or the arc of vertex ``v``
+    (``-1 - v``) it lies on, from the core's overlay; None to label each segment by the
+    nearest feature). ``rings``: the polygon's rings with the offset side on their right
+    (moved by ``r``); ``sign``: +1 when the arcs turn counter-clockwise (a grow), -1 (a
+    shrink); ``slack``: the verification's resolution.
+    """
+    F = _frame(rings, r, sign, slack)
+    tiny = ARC_STRAIGHT_ULPS * math.ulp(max(float(np.abs(F.V).max()), r))
+    verified = True
     polys = []
     for item in items:
         out_rings = []
         for c, lab in item:
-            if lab is not None and (lab == core.OFFSET_DETOUR).any():
-                lab = None  # never expected: the overlay's boundary avoids detours
-            if lab is None:
-                lab, _ = nearest((c + np.roll(c, -1, 0)) / 2)
-            chg = np.flatnonzero(lab != np.roll(lab, 1))
-            if len(chg) == 0:
-                if lab[0] >= 0:
-                    continue
-                ctr = V[-1 - lab[0]]
-                out_rings.append(
-                    np.array(
-                        [
-                            [ctr[0] + r, ctr[1], sign, ctr[0], ctr[1]],
-                            [ctr[0] - r, ctr[1], sign, ctr[0], ctr[1]],
-                        ]
-                    )
-                )
-                continue
-            labels = lab[chg].tolist()
-            near = c[chg]
-            # two moved edges that meet at a convex vertex meet through its arc (a
-            # one-corner arc polygon has no segment of its own to carry the label)
-            la = np.array(labels)
-            lp = np.roll(la, 1)
-            # in the rings' own order, edge e0 comes before e1 (a shrink runs backwards)
-            e0, e1 = (lp, la) if sign > 0 else (la, lp)
-            e0c, e1c = np.maximum(e0, 0), np.maximum(e1, 0)
-            adj = np.flatnonzero((la >= 0) & (lp >= 0) & (VE[e0c] == VS[e1c]))
-            if len(adj):
-                turn = orient_array(A0[e0c[adj]], A1[e0c[adj]], A1[e1c[adj]])
-                for q in adj[turn > 0][::-1]:
-                    labels.insert(int(q), int(-1 - VS[e1c[q]]))
-                    near = np.insert(near, q, near[q], axis=0)
-            J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
-            for _ in range(repairs):
-                # a piece whose exact extent is negative (a moved edge run backwards, an
-                # arc beyond its vertex's normals) is not on the true boundary: the trace
-                # was too coarse to see its neighbours meet first; drop it
-                la = np.array(labels)
-                if len(la) > 2:
-                    ext = extents(la, J)
-                    worst = int(np.argmin(ext))
-                    if ext[worst] < 0:
-                        del labels[worst]
-                        near = np.delete(near, worst, axis=0)
-                        J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
-                        continue
-                # a junction nearer than r to the polygon is not on the true boundary: a
-                # piece too short for the trace lies between; insert the nearest feature
-                f, dist = nearest(J)
-                bad = np.flatnonzero(dist < r - slack)
-                changed = False
-                for q in bad[::-1]:
-                    if f[q] in (labels[q - 1], labels[q]):
-                        continue
-                    labels.insert(int(q), int(f[q]))
-                    near = np.insert(near, q, J[q], axis=0)
-                    changed = True
-                if not changed:
-                    break
-                J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
-            # verify: every junction on the true boundary, every piece of positive extent
-            _, dist = nearest(J)
-            ext = extents(np.array(labels), J, strict=True)
-            if (np.abs(dist - r) > slack).any() or (ext < 0).any():
-                verified[0] = False
-            g = len(labels)
-            rows = np.empty((g, 5))
-            rows[:, :2] = J
-            rows[:, 2] = 0.0
-            rows[:, 3:] = np.nan
-            lab_arr = np.array(labels)
-            arc = np.flatnonzero(lab_arr < 0)
-            if len(arc):
-                ctr = V[-1 - lab_arr[arc]]
-                s0 = J[arc]
-                s1 = J[(arc + 1) % g]
-                a0 = np.arctan2(s0[:, 1] - ctr[:, 1], s0[:, 0] - ctr[:, 0])
-                a1 = np.arctan2(s1[:, 1] - ctr[:, 1], s1[:, 0] - ctr[:, 0])
-                if sign > 0:
-                    sw = np.mod(a1 - a0, 2 * math.pi)
-                else:
-                    sw = -np.mod(a0 - a1, 2 * math.pi)
-                real = (r * (1 - np.cos(sw / 2)) > tiny) & ~(s0 == s1).all(axis=1)
-                arc, ctr, sw = arc[real], ctr[real], sw[real]
-                rows[arc, 2] = np.tan(sw / 4)
-                rows[arc, 3:] = ctr
-            # drop repeated points (a zero-length piece)
-            keep = ~((rows[:, :2] == np.roll(rows[:, :2], -1, 0)).all(axis=1))
-            if keep.sum() >= 2:
-                rows = rows[keep]
-                first = np.lexsort((rows[:, 0], rows[:, 1]))[0]  # bottom-most, then left-most
-                out_rings.append(np.roll(rows, -first, 0))
+            rows, ok = _trace_ring(F, c, lab, repairs, tiny)
+            verified = verified and ok
+            if rows is not None:
+                out_rings.append(rows)
         if out_rings:
             polys.append(out_rings)
-    return polys, verified[0]
+    return polys, verified
+
+
+def _trace_ring(F: _Frame, c: np.ndarray, lab: Any, repairs: int, tiny: float) -> tuple:
+    """One traced ring as exact rows ``(x, y, bulge, cx, cy)`` (None: no ring), and
+    whether it verified."""
+    from .._engine import core
+
+    r, sign, slack = F.r, F.sign, F.slack
+    if lab is not None and (lab == core.OFFSET_DETOUR).any():
+        lab = None  # never expected: the overlay's boundary avoids detours
+    if lab is None:
+        lab, _ = _nearest_feature(F, (c + np.roll(c, -1, 0)) / 2)
+    chg = np.flatnonzero(lab != np.roll(lab, 1))
+    if len(chg) == 0:
+        if lab[0] >= 0:
+            return None, True
+        ctr = F.V[-1 - lab[0]]
+        circle = [
+            [ctr[0] + r, ctr[1], sign, ctr[0], ctr[1]],
+            [ctr[0] - r, ctr[1], sign, ctr[0], ctr[1]],
+        ]
+        return np.array(circle), True
+    labels = lab[chg].tolist()
+    near = c[chg]
+    # two moved edges that meet at a convex vertex meet through its arc (a one-corner arc
+    # polygon has no segment of its own to carry the label)
+    la = np.array(labels)
+    lp = np.roll(la, 1)
+    # in the rings' own order, edge e0 comes before e1 (a shrink runs backwards)
+    e0, e1 = (lp, la) if sign > 0 else (la, lp)
+    e0c, e1c = np.maximum(e0, 0), np.maximum(e1, 0)
+    adj = np.flatnonzero((la >= 0) & (lp >= 0) & (F.VE[e0c] == F.VS[e1c]))
+    if len(adj):
+        turn = orient_array(F.A0[e0c[adj]], F.A1[e0c[adj]], F.A1[e1c[adj]])
+        for q in adj[turn > 0][::-1]:
+            labels.insert(int(q), int(-1 - F.VS[e1c[q]]))
+            near = np.insert(near, q, near[q], axis=0)
+    labels, J = _repaired(F, labels, near, repairs)
+    # verify: every junction on the true boundary, every piece of positive extent
+    _, dist = _nearest_feature(F, J)
+    ext = _extents(F, np.array(labels), J, strict=True)
+    ok = not ((np.abs(dist - r) > slack).any() or (ext < 0).any())
+    return _rows(F, labels, J, tiny), ok
+
+
+def _repaired(F: _Frame, labels: list, near: np.ndarray, repairs: int) -> tuple:
+    """The labels and junctions after at most ``repairs`` rounds of repairs."""
+    r, slack = F.r, F.slack
+    J = _junctions_of(F, labels, near)
+    for _ in range(repairs):
+        # a piece whose exact extent is negative (a moved edge run backwards, an arc
+        # beyond its vertex's normals) is not on the true boundary: the trace was too
+        # coarse to see its neighbours meet first; drop it
+        la = np.array(labels)
+        if len(la) > 2:
+            ext = _extents(F, la, J)
+            worst = int(np.argmin(ext))
+            if ext[worst] < 0:
+                del labels[worst]
+                near = np.delete(near, worst, axis=0)
+                J = _junctions_of(F, labels, near)
+                continue
+        # a junction nearer than r to the polygon is not on the true boundary: a piece
+        # too short for the trace lies between; insert the nearest feature
+        f, dist = _nearest_feature(F, J)
+        bad = np.flatnonzero(dist < r - slack)
+        changed = False
+        for q in bad[::-1]:
+            if f[q] in (labels[q - 1], labels[q]):
+                continue
+            labels.insert(int(q), int(f[q]))
+            near = np.insert(near, q, J[q], axis=0)
+            changed = True
+        if not changed:
+            break
+        J = _junctions_of(F, labels, near)
+    return labels, J
+
+
+def _rows(F: _Frame, labels: list, J: np.ndarray, tiny: float) -> np.ndarray | None:
+    """Rows ``(x, y, bulge, cx, cy)`` from the bottom-most junction (None when fewer than
+    two distinct points remain); an arc too flat to tell from its chord is a segment."""
+    r, sign = F.r, F.sign
+    g = len(labels)
+    rows = np.empty((g, 5))
+    rows[:, :2] = J
+    rows[:, 2] = 0.0
+    rows[:, 3:] = np.nan
+    lab_arr = np.array(labels)
+    arc = np.flatnonzero(lab_arr < 0)
+    if len(arc):
+        ctr = F.V[-1 - lab_arr[arc]]
+        s0 = J[arc]
+        s1 = J[(arc + 1) % g]
+        a0 = np.arctan2(s0[:, 1] - ctr[:, 1], s0[:, 0] - ctr[:, 0])
+        a1 = np.arctan2(s1[:, 1] - ctr[:, 1], s1[:, 0] - ctr[:, 0])
+        if sign > 0:
+            sw = np.mod(a1 - a0, 2 * math.pi)
+        else:
+            sw = -np.mod(a0 - a1, 2 * math.pi)
+        real = (r * (1 - np.cos(sw / 2)) > tiny) & ~(s0 == s1).all(axis=1)
+        arc, ctr, sw = arc[real], ctr[real], sw[real]
+        rows[arc, 2] = np.tan(sw / 4)
+        rows[arc, 3:] = ctr
+    # drop repeated points (a zero-length piece)
+    keep = ~((rows[:, :2] == np.roll(rows[:, :2], -1, 0)).all(axis=1))
+    if keep.sum() < 2:
+        return None
+    rows = rows[keep]
+    first = np.lexsort((rows[:, 0], rows[:, 1]))[0]  # bottom-most, then left-most
+    return np.roll(rows, -first, 0)
 
 
 @np.errstate(over="ignore", invalid="ignore")  # an overflow is reported, not warned about
@@ -658,15 +710,7 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
             [(xy[ro[k] : ro[k + 1] - 1], lab[ro[k] : ro[k + 1] - 1]) for k in range(a, b)]
             for a, b in zip(po[:-1].tolist(), po[1:].tolist())
         ]
-        seg = xy[1:] - xy[:-1]
-        closing = np.zeros(len(xy) - 1, bool)
-        closing[ro[1:-1] - 1] = True  # no segment from one ring's end to the next's start
-        seg = seg[~closing]
-        length = float(np.hypot(seg[:, 0], seg[:, 1]).sum())
-        x0, y0 = xy[:-1, 0][~closing], xy[:-1, 1][~closing]
-        x1, y1 = xy[1:, 0][~closing], xy[1:, 1][~closing]
-        reg_area = 0.5 * float((x0 * y1 - x1 * y0).sum())
-        parts, holes = len(po) - 1, (len(ro) - 1) - (len(po) - 1)
+        length, reg_area, parts, holes = _measures(xy, ro, po)
         # the exact set lies inside the traced outer polygon, within a band of width
         # rel·r along its boundary, and it has the traced polygon's topology
         slack = max(VERIFY_RESOLUTION * r, math.ldexp(least, -e0))
@@ -691,6 +735,24 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
     verified = bool(ok and plausible)
     if best is not None:
         polys, e0 = best
+    return _scaled(polys, e0, d, polygon, verified)
+
+
+def _measures(xy: np.ndarray, ro: np.ndarray, po: np.ndarray) -> tuple[float, float, int, int]:
+    """The traced polygon's boundary length, area, and numbers of parts and holes."""
+    seg = xy[1:] - xy[:-1]
+    closing = np.zeros(len(xy) - 1, bool)
+    closing[ro[1:-1] - 1] = True  # no segment from one ring's end to the next's start
+    seg = seg[~closing]
+    length = float(np.hypot(seg[:, 0], seg[:, 1]).sum())
+    x0, y0 = xy[:-1, 0][~closing], xy[:-1, 1][~closing]
+    x1, y1 = xy[1:, 0][~closing], xy[1:, 1][~closing]
+    reg_area = 0.5 * float((x0 * y1 - x1 * y0).sum())
+    return length, reg_area, len(po) - 1, (len(ro) - 1) - (len(po) - 1)
+
+
+def _scaled(polys: list, e0: int, d: float, polygon: Any, verified: bool) -> OffsetArcs:
+    """The traced rings scaled back by ``2**e0``; an infinite coordinate is an error."""
     for p in polys:
         for ring in p:
             ring[:, [0, 1, 3, 4]] = np.ldexp(ring[:, [0, 1, 3, 4]], e0)
