@@ -18,7 +18,7 @@ import numpy as np
 from ._engine import core
 from ._engine import dispatch as D
 from ._engine import options as _options
-from ._engine.coerce import as_array
+from ._engine.coerce import as_array, is_shapely
 from ._engine.containers import apply, boxed, is_many
 from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
@@ -443,7 +443,7 @@ def _as_ragged(x: Any, name: str) -> Ragged:
         return x
     if isinstance(x, np.ndarray) and x.dtype == object:
         return Ragged.from_shapely(x, name)
-    if isinstance(x, (list, tuple)) and x and type(x[0]).__module__.startswith("shapely"):
+    if isinstance(x, (list, tuple)) and x and is_shapely(x[0]):
         return Ragged.from_shapely(np.array(x, dtype=object), name)
     return Ragged.from_list(x, name)
 

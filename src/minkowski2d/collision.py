@@ -41,7 +41,7 @@ from ._engine import core
 from ._engine import dispatch as D
 from ._engine import exact as _exact
 from ._engine import options as _options
-from ._engine.coerce import INT, as_array
+from ._engine.coerce import INT, as_array, to_float
 from ._engine.containers import apply, boxed
 from ._types import ArrayLike2, PolygonsLike, ProgressLike
 from .errors import OverflowGeometryError, ShapeError
@@ -125,9 +125,7 @@ class Penetration(NamedTuple):
 def _operand(obj: Any, name: str, hull: bool) -> tuple[Any, str]:
     """``(data, kind)``: an (n, 2) int64/float64 ndarray, or a list of exact points."""
     if hull:
-        from .convex import convex_hull
-
-        obj = convex_hull(obj)
+        obj = D.hull(obj, "points")
     data, kind = as_array(obj, name)
     return data, kind
 
@@ -532,10 +530,7 @@ def _sg(v: Any) -> int:
 
 
 def _fl(v: Any) -> float:
-    try:
-        f = float(v)
-    except OverflowError:
-        f = math.inf
+    f = to_float(v)
     if not math.isfinite(f):
         raise OverflowGeometryError("result overflows float64 (a coordinate is infinite)")
     return f

@@ -34,21 +34,6 @@ _UNHANDLED = int(D.Status.UNHANDLED)
 _NAMES = ("a", "b", "result")
 
 
-def _hull_core(data: np.ndarray, path: str) -> np.ndarray:
-    h = (core.hull_i if path == "i" else core.hull_f)(data)
-    return np.ascontiguousarray(data[h])
-
-
-def _normalize_core(data: np.ndarray, path: str, name: str) -> np.ndarray:
-    idx, _, code, v = (core.normalize_i if path == "i" else core.normalize_f)(data)
-    if code == D.Status.RANGE:
-        return _exact.to_array(
-            _exact.normalize_list([tuple(r) for r in data.tolist()], name)[0], "int"
-        )
-    D.raise_status(code, v, name, data)
-    return data[idx]
-
-
 def _sum_core(A: np.ndarray, B: np.ndarray, path: str) -> np.ndarray:
     out = np.empty((len(A) + len(B), 2), A.dtype)
     k, code, which, v = (core.sum_i if path == "i" else core.sum_f)(A, B, out)
@@ -106,14 +91,7 @@ def normalize(p: ArrayLike2, *, hull: bool = False) -> Polygon:
     >>> mk.normalize([(0, 2), (2, 0), (1, 0), (0, 0)]).tolist()  # CW, collinear (1, 0)
     [[0, 0], [2, 0], [0, 2]]
     """
-    data, out_kind, path = D.one(p, "p")
-    if path == "py":
-        if hull:
-            data = _exact.hull_list(data)
-        return _exact.to_array(_exact.normalize_list(data, "p")[0], out_kind)
-    if hull:
-        data = _hull_core(data, path)
-    return _normalize_core(data, path, "p")
+    return D.normalized(p, "p", hull=hull)
 
 
 def is_convex(p: ArrayLike2) -> bool:
@@ -147,11 +125,7 @@ def convex_hull(points: ArrayLike2) -> Polygon:
     >>> mk.convex_hull([(0, 0), (2, 2), (2, 0), (1, 1), (0, 2), (1, 0)]).tolist()
     [[0, 0], [2, 0], [2, 2], [0, 2]]
     """
-    data, out_kind, path = D.one(points, "points")
-    if path == "py":
-        q = _exact.normalize_list(_exact.hull_list(data), "points")[0]
-        return _exact.to_array(q, out_kind)
-    return _normalize_core(_hull_core(data, path), path, "points")
+    return D.hull(points, "points")
 
 
 def signed_area(p: ArrayLike2) -> float:
@@ -283,8 +257,8 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
     if path == "py":
         return _sum_exact(A, B, out_kind, hull)
     if hull:
-        A = _hull_core(A, path)
-        B = _hull_core(B, path)
+        A = D.hull_core(A, path)
+        B = D.hull_core(B, path)
     return _sum_core(A, B, path)
 
 

@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 
 from ._engine import options as _options
-from ._engine.coerce import as_array
+from ._engine.coerce import as_array, is_shapely
 from .errors import (
     EmptyGeometryError,
     GeometryError,
@@ -89,7 +89,7 @@ def _rotate(part: Any, angle: Any) -> Any:
     import shapely
 
     q = _quarter_turns(angle)
-    if type(part).__module__.startswith("shapely"):
+    if is_shapely(part):
         if q == 0:
             return part
         if q is not None:
@@ -126,10 +126,10 @@ def rotate_part(part: Any, angle: Any) -> Any:
     >>> mk.rotate_part([(0, 0), (2, 0), (2, 1)], 90).tolist()
     [[0, 0], [0, 2], [-1, 2]]
     """
-    if not type(part).__module__.startswith("shapely"):
+    if not is_shapely(part):
         as_array(part, "part")  # the specific error for a bad ring (the part is kept as is)
     if _quarter_turns(angle, "angle") == 0:
-        return part if type(part).__module__.startswith("shapely") else np.asarray(part)
+        return part if is_shapely(part) else np.asarray(part)
     return _rotate(part, angle)
 
 
@@ -398,7 +398,7 @@ def _parts(parts: Any) -> list:
         if p is None:
             continue
         name = f"parts[{i}]"
-        if type(p).__module__.startswith("shapely"):
+        if is_shapely(p):
             if p.is_empty:
                 raise EmptyGeometryError(f"{name}: empty {p.geom_type}", argument=name)
             if p.geom_type not in ("Polygon", "MultiPolygon", "LinearRing"):

@@ -39,6 +39,8 @@ from typing import Any
 
 import numpy as np
 
+from ._engine.coerce import is_shapely
+
 __all__ = ["plot", "SOURCE_COLORS"]
 
 #: colours of the merge trace's edges by source
@@ -115,7 +117,7 @@ def plot(obj: Any, ax: Any = None, **kwargs: Any) -> Any:
 
 
 def _is_shapely(x: Any) -> bool:
-    return type(x).__module__.startswith("shapely")
+    return is_shapely(x)
 
 
 def _geometries(obj: Any) -> list:

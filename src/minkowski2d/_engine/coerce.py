@@ -15,6 +15,7 @@ The dtype policy
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from typing import Any
 
@@ -39,6 +40,21 @@ INT64_MIN = -(1 << 63)
 
 _FLOAT_TYPES = (float, np.floating)
 _INT_TYPES = (int, np.integer)
+
+
+def to_float(v: Any) -> float:
+    """The nearest float to an exact number; ``inf`` (with the sign) when it is beyond
+    the float range (``float()`` raises OverflowError there)."""
+    try:
+        return float(v)
+    except OverflowError:
+        return math.inf if v > 0 else -math.inf
+
+
+def is_shapely(x: Any) -> bool:
+    """True for a shapely geometry (or any object of a shapely module), without
+    importing shapely."""
+    return type(x).__module__.startswith("shapely")
 
 
 def _kind_of_scalar(v: Any, name: str, k: int) -> str:

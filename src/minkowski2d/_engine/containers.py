@@ -46,6 +46,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..errors import GeometryError, NotConvexError, ShapeError
+from .coerce import is_shapely
 
 __all__ = ["boxed", "unbox", "apply", "Box", "Progress", "check_progress"]
 
@@ -173,13 +174,13 @@ def is_many(x: Any, empty: bool = True) -> bool:
         return True
     if isinstance(x, np.ndarray):
         return x.dtype == object and x.ndim == 1 and (len(x) == 0 or not np.isscalar(x[0]))
-    if type(x).__module__.startswith("shapely"):
+    if is_shapely(x):
         return False
     if isinstance(x, (list, tuple)):
         if len(x) == 0:
             return empty
         first = x[0]
-        return first is None or np.ndim(first) == 2 or type(first).__module__.startswith("shapely")
+        return first is None or np.ndim(first) == 2 or is_shapely(first)
     return False
 
 

@@ -225,3 +225,44 @@ def check_convex(p: Any, name: str) -> bool:
         return False
     raise_status(code, v, name, data)
     return True
+
+
+# --------------------------------------------------------------------------------------
+# hull and normalize: the engine's own (public modules and the engine call these)
+
+
+def hull_core(data: np.ndarray, path: str) -> np.ndarray:
+    h = (core.hull_i if path == "i" else core.hull_f)(data)
+    return np.ascontiguousarray(data[h])
+
+
+def normalize_core(data: np.ndarray, path: str, name: str) -> np.ndarray:
+    idx, _, code, v = (core.normalize_i if path == "i" else core.normalize_f)(data)
+    if code == Status.RANGE:
+        return _exact.to_array(
+            _exact.normalize_list([tuple(r) for r in data.tolist()], name)[0], "int"
+        )
+    raise_status(code, v, name, data)
+    return data[idx]
+
+
+def normalized(p: Any, name: str, hull: bool = False) -> Any:
+    """``p`` normalized (CCW, bottom-most first, no duplicate or collinear vertices); with
+    ``hull``, its convex hull. Errors name ``name``."""
+    data, out_kind, path = one(p, name)
+    if path == "py":
+        if hull:
+            data = _exact.hull_list(data)
+        return _exact.to_array(_exact.normalize_list(data, name)[0], out_kind)
+    if hull:
+        data = hull_core(data, path)
+    return normalize_core(data, path, name)
+
+
+def hull(points: Any, name: str) -> Any:
+    """The convex hull of a point set, normalized. Errors name ``name``."""
+    data, out_kind, path = one(points, name)
+    if path == "py":
+        q = _exact.normalize_list(_exact.hull_list(data), name)[0]
+        return _exact.to_array(q, out_kind)
+    return normalize_core(hull_core(data, path), path, name)

@@ -33,11 +33,9 @@ _PLUGINS = (
     "minkowski2d._cli_planning",
 )
 
-SEED_A = [(0, 0), (2, 0), (0, 2)]
-SEED_B = [(0, 0), (1, 0), (1, 1), (0, 1)]
-
 
 def _cmd_demo(args: argparse.Namespace) -> int:
+    from ..animation.page import DEMO_TITLE, SEED_A, SEED_B, render
     from ..convex import minkowski_sum
     from .common import write_output
 
@@ -45,10 +43,6 @@ def _cmd_demo(args: argparse.Namespace) -> int:
     print("A (triangle):", [list(p) for p in SEED_A])
     print("B (square):  ", [list(p) for p in SEED_B])
     print("A ⊕ B:       ", s.tolist())
-    try:
-        from ..animation.page import DEMO_TITLE, render
-    except ImportError:
-        return 0
     path = write_output(render(SEED_A, SEED_B, title=DEMO_TITLE), args.output or "animation.html")
     print(f"animation:    {path.resolve()}")
     return 0

@@ -10,6 +10,7 @@ from typing import Any
 import numpy as np
 
 from .._engine import core
+from .._engine.coerce import to_float
 from .._engine.overlay import geometries
 from ..errors import (
     OverflowGeometryError,
@@ -208,10 +209,7 @@ def _on_line(ln, lines, side, cr) -> Any:
 
 def _to_float(v: Fraction) -> float:
     """The nearest double to an exact coordinate of a result."""
-    try:
-        f = float(v)
-    except OverflowError:
-        f = math.inf
+    f = to_float(v)
     if math.isinf(f):
         raise OverflowGeometryError(
             "a, b: the result overflows float64 (a coordinate beyond ±1.8e308)",
@@ -231,9 +229,9 @@ def _from_exact_points(pts: list) -> Any:
             uniq.append(p)
     if len(uniq) == 1:
         return shapely.Point(_to_float(uniq[0][0]), _to_float(uniq[0][1]))
-    from ..convex import convex_hull
+    from .._engine import dispatch as D
 
-    h = convex_hull([(Fraction(x), Fraction(y)) for x, y in uniq])
+    h = D.hull([(Fraction(x), Fraction(y)) for x, y in uniq], "points")
     out = np.array([(_to_float(x), _to_float(y)) for x, y in h.tolist()], dtype=np.float64)
     if len(out) == 2:
         return shapely.LineString(out)
@@ -319,9 +317,9 @@ def _erode(A: _Operand, B: _Operand) -> Any:
     ra = A.convex_ring
     if ra is not None:
         # c + B ⊆ A  ⟺  c + hull(B) ⊆ A for a convex A: the exact convex erosion
-        from ..convex import normalize
+        from .._engine import dispatch as D
 
-        na = np.asarray(normalize(ra), dtype=np.float64)
+        na = np.asarray(D.normalized(ra, "p"), dtype=np.float64)
         return _erode_convex(na, B.hull())
     return _erode_general(A, B)
 

@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from .._engine import options as _options
+from .._engine.containers import is_many
 from ..batch import Ragged
 from ..errors import (
     GeometryError,
@@ -25,25 +26,11 @@ from .sums import (
 
 
 def _many_operands(X: Any) -> tuple[list, bool]:
-    """The operands of a batch argument and whether it is a collection (else broadcast).
-
-    A Ragged, an object array, or a list / tuple whose first item is a ring (2-D) or a
-    shapely geometry (or None) is a collection; anything else is one operand."""
-    if isinstance(X, Ragged):
-        return X.to_list(), True
-    if isinstance(X, np.ndarray):
-        if X.dtype == object and X.ndim == 1:
-            return list(X), True
+    """The operands of a batch argument and whether it is a collection (else broadcast);
+    what a collection is: :func:`minkowski2d._engine.containers.is_many`."""
+    if not is_many(X):
         return [X], False
-    if type(X).__module__.startswith("shapely"):
-        return [X], False
-    if isinstance(X, (list, tuple)):
-        if len(X) == 0:
-            return [], True
-        x0 = X[0]
-        if x0 is None or type(x0).__module__.startswith("shapely") or np.ndim(x0) == 2:
-            return list(X), True
-    return [X], False
+    return (X.to_list() if isinstance(X, Ragged) else list(X)), True
 
 
 def minkowski_sum_general_many(

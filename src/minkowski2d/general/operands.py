@@ -11,7 +11,7 @@ import numpy as np
 
 from .._engine import core
 from .._engine import options as _options
-from .._engine.coerce import as_array
+from .._engine.coerce import as_array, is_shapely, to_float
 from ..batch import Ragged
 from ..errors import (
     EmptyGeometryError,
@@ -76,9 +76,9 @@ class _Operand:
         """Convex hull of the operand (exact, normalized)."""
         if self.flat is not None:
             return self.flat
-        from ..convex import convex_hull
+        from .._engine import dispatch as D
 
-        return np.asarray(convex_hull(self.rings.coords), dtype=np.float64)
+        return np.asarray(D.hull(self.rings.coords, "points"), dtype=np.float64)
 
 
 class _Raw:
@@ -160,11 +160,7 @@ def _parse(obj: Any, name: str) -> _Raw:
             "its Minkowski sum is unbounded too",
             argument=name,
         )
-    if (
-        isinstance(obj, (list, tuple))
-        and obj
-        and (type(obj[0]).__module__.startswith("shapely") or np.ndim(obj[0]) == 2)
-    ):
+    if isinstance(obj, (list, tuple)) and obj and (is_shapely(obj[0]) or np.ndim(obj[0]) == 2):
         # a collection of polygons: their union is the operand
         return _Raw("items", [_parse(item, f"{name}[{k}]") for k, item in enumerate(obj)], name)
     return _coords_raw(obj, name)
@@ -180,10 +176,7 @@ def _float_ring(raw: _Raw) -> np.ndarray:
     out = np.empty((len(raw.value), 2))
     for k, p in enumerate(raw.value):
         for j, v in enumerate(p):
-            try:
-                f = float(v)
-            except OverflowError:
-                f = math.inf
+            f = to_float(v)
             if math.isinf(f):
                 raise OverflowGeometryError(
                     f"{name}: vertex {k} has a coordinate beyond float64 (±1.8e308)",
@@ -267,9 +260,9 @@ def _build(raw: _Raw) -> _Operand:
             return _Operand(rings, orientation, None, name)
         if status and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
             # a point, a segment, or collinear points: a degenerate convex set
-            from ..convex import convex_hull
+            from .._engine import dispatch as D
 
-            return _Operand(None, None, np.asarray(convex_hull(ring), dtype=np.float64), name)
+            return _Operand(None, None, np.asarray(D.hull(ring, "points"), dtype=np.float64), name)
     return _checked(rings, name, False)
 
 

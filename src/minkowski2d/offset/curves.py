@@ -10,7 +10,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from .._engine import options as _options
-from .._engine.coerce import as_array
+from .._engine.coerce import as_array, is_shapely
 from .._engine.containers import is_many
 from ..errors import (
     EmptyGeometryError,
@@ -164,7 +164,7 @@ def _read(obj: Any, name: str) -> _Input:
     of one or two vertices for a point or a segment."""
     import shapely
 
-    if type(obj).__module__.startswith("shapely"):
+    if is_shapely(obj):
         if obj.geom_type in ("Point", "LineString", "MultiPoint"):
             obj = shapely.get_coordinates(obj)
         else:
@@ -201,9 +201,9 @@ def _read(obj: Any, name: str) -> _Input:
         if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
             _validated(*rings, name, False)  # raises the core's verdict
     # a point, a segment, or collinear points: a degenerate convex set
-    from ..convex import convex_hull
+    from .._engine import dispatch as D
 
-    return _one_ring(np.asarray(convex_hull(data), dtype=np.float64), delta)
+    return _one_ring(np.asarray(D.hull(data, "points"), dtype=np.float64), delta)
 
 
 # --------------------------------------------------------------------------------------
