@@ -703,12 +703,13 @@ def test_exact_normalization_matches_the_core(pts):
             return (type(exc), exc.vertex, str(exc))
 
     from minkowski2d._engine import exact as _exact
+    from minkowski2d._engine import exact_collision
 
     def exact_twin(p, name):
         _, idx, split = _exact.normalize_list(p, name)
         return idx, split
 
-    core = run(C._exact_normalize, pts)
+    core = run(exact_collision._exact_normalize, pts)
     assert run(exact_twin, pts) == core
     wide = [(x << 70, y << 70) for x, y in pts]
-    assert run(C._exact_normalize, wide) == core
+    assert run(exact_collision._exact_normalize, wide) == core

@@ -1,12 +1,8 @@
-"""The compiled exact core (C++17, nanobind): predicates, normalization, the merge, the
-batch, hull, collision walks and GJK. Private: the public modules reach it through
-:mod:`minkowski2d._dispatch`.
+"""The compiled exact core (C++17, nanobind): the extension module ``_ext`` and its C++
+sources. Private: Python reaches it through one gateway, :mod:`minkowski2d._engine.core`
+(the only Python module that imports ``_ext``).
 
->>> from minkowski2d._core import _ext
->>> _ext.cross_sign_f(0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
+>>> from minkowski2d._engine import core
+>>> core.cross_sign_f(0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0)
 1
 """
-
-from . import _ext
-
-__all__ = ["_ext"]
