@@ -64,7 +64,7 @@ _INTERSECTS, _DISTANCE, _PENETRATION, _GJK, _AUTO = (
     core.COLL_GJK,
     core.COLL_AUTO,
 )
-_OUT_OF_RANGE = core.COLL_OUT_OF_RANGE
+_OUT_OF_RANGE = core.Status.RANGE  # values the kernels cannot take exactly: exact path
 _METHODS = {"auto": _AUTO, "sum": _INTERSECTS, "gjk": _GJK}
 
 

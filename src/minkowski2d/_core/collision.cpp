@@ -70,8 +70,8 @@ i64 pairs_b(In2<double> pa, In1<i64> offa, In1<i64> ida, In1<i64> ka, In1<i64> s
 }
 
 // single(pa, pb, mode, int_a, int_b, res (1, 7)) -> (code, which, vertex, hit): code 0 on
-// success, else a Status or OUT_OF_RANGE for operand `which` (0 = a, 1 = b) at `vertex`;
-// GJK's cap gives code -1.
+// success, else a Status (RANGE: values the kernels cannot compute exactly) for operand
+// `which` (0 = a, 1 = b) at `vertex`; GJK's cap gives code -1.
 nb::tuple single_b(In2<double> pa, In2<double> pb, int mode, bool int_a, bool int_b,
                    Mut2<double> res) {
   need(pa.shape(1) == 2 && pb.shape(1) == 2, "single: shape (n, 2) expected");
@@ -139,7 +139,7 @@ nb::tuple contains_single_b(In2<double> p, bool int_p, In2<double> pts, bool int
       for (i64 t = 0; t < 2 * m && badf < 0; ++t)
         if (!(pts.data()[t] - pts.data()[t] == 0.0)) badf = t / 2;
       if (bad >= 0) {
-        code = mk::coll::OUT_OF_RANGE;
+        code = mk::RANGE;
         which = 1;
         vertex = bad;
       } else if (badf >= 0) {
@@ -163,7 +163,6 @@ void bind_collision(nb::module_& m) {
   m.attr("COLL_GJK") = (int)mk::coll::GJK;
   m.attr("COLL_AUTO") = (int)mk::coll::AUTO;
   m.attr("COLL_AUTO_SUM_MAX") = (long long)mk::coll::AUTO_SUM_MAX;
-  m.attr("COLL_OUT_OF_RANGE") = (int)mk::coll::OUT_OF_RANGE;
   m.def("coll_prep", &prep_b, "p"_a.noconvert(), "off"_a.noconvert(), "is_int"_a, "mode"_a,
         "idx"_a.noconvert(), "kk"_a.noconvert(), "ss"_a.noconvert(), "inv"_a.noconvert(),
         "threads"_a = 1, "Normalize every polygon of a ragged float64 array for the collision kernels.");

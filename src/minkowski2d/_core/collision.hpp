@@ -11,7 +11,7 @@
 //
 // So intersects (walk and GJK) and contains take any finite float. The *values* (distance,
 // depth, witnesses) use the expansion arithmetic of exact.hpp and square roots, which
-// need every nonzero |coordinate| in [2^-400, 2^400]; prep() reports OUT_OF_RANGE for
+// need every nonzero |coordinate| in [2^-400, 2^400]; prep() reports RANGE for
 // such values only in the modes that compute them, and the caller takes its exact path.
 //
 // The boundary of D = A + (-B) is walked without being stored: merging the edges of A
@@ -43,10 +43,9 @@ namespace coll {
 // mode of the pair kernel
 enum Mode : int { INTERSECTS = 0, DISTANCE = 1, PENETRATION = 2, GJK = 3, AUTO = 4 };
 constexpr i64 AUTO_SUM_MAX = 64;  // vertex total up to which the walk beats GJK (measured)
-constexpr int OUT_OF_RANGE = 10;  // status: values the kernels cannot compute exactly
 constexpr int NCOL = 7;           // result row: value, normal (2), point_a (2), point_b (2)
 
-constexpr double I_LIM = 0x1p53;
+constexpr double I_LIM = (double)FLOAT_EXACT_INT;  // ints convert to double exactly
 constexpr double REL = 0x1p-45;  // relative accuracy demanded of a float cross product
 constexpr double GEN_BOUND = 10.0 * 0x1p-53;  // error bound factor of the 4-term cross
 constexpr double GEN_MIN = 0x1p-900;  // below this bound a product may have underflowed
@@ -210,7 +209,7 @@ inline PrepResult prep(const double* p, i64 np_, const i64* off, i64 P, bool is_
   if (out_of_range(p, 0, np_, is_int, values) >= 0) {
     for (i64 q = 0; q < P; ++q) {
       i64 r = out_of_range(p, off[q], off[q + 1], is_int, values);
-      if (r >= 0) return {OUT_OF_RANGE, q, r};
+      if (r >= 0) return {RANGE, q, r};
     }
   }
   int nt = (int)std::max<i64>(1, std::min<i64>(threads, P / 64));

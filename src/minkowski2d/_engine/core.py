@@ -122,13 +122,12 @@ class Status(enum.IntEnum):
 #: Why a polygon is invalid (``Status.INVALID_POLYGON``); defined once, in exact.hpp.
 Invalid = enum.IntEnum("Invalid", dict(_ext.INVALID_REASONS))  # type: ignore[misc]
 
-#: The collision walk's queries and its own out-of-range code (collision.hpp).
+#: The collision walk's queries (collision.hpp).
 COLL_INTERSECTS: int = _ext.COLL_INTERSECTS
 COLL_DISTANCE: int = _ext.COLL_DISTANCE
 COLL_PENETRATION: int = _ext.COLL_PENETRATION
 COLL_GJK: int = _ext.COLL_GJK
 COLL_AUTO: int = _ext.COLL_AUTO
-COLL_OUT_OF_RANGE: int = _ext.COLL_OUT_OF_RANGE
 #: The overlay's rules (overlay.hpp).
 OVERLAY_UNION: int = _ext.OVERLAY_UNION
 OVERLAY_DIFFERENCE: int = _ext.OVERLAY_DIFFERENCE
