@@ -12,12 +12,6 @@
 
 namespace mk {
 
-template <class T>
-inline int orient(const T* p, i64 i, i64 j, i64 k) {
-  return cross_sign(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1], p[2 * i], p[2 * i + 1],
-                    p[2 * k], p[2 * k + 1]);
-}
-
 // The edge i -> j points into the half-plane y > 0, or along +x.
 template <class T>
 inline bool upper(const T* p, i64 i, i64 j) {

@@ -17,17 +17,10 @@
 namespace mk {
 namespace decompose {
 
-// Exact sign of the turn i -> j -> k (vertex ids into the (n, 2) coordinate array p).
-template <class T>
-inline int turn(const T* p, i64 i, i64 j, i64 k) {
-  return cross_sign(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1], p[2 * j], p[2 * j + 1],
-                    p[2 * k], p[2 * k + 1]);
-}
-
 // True when the path i -> j -> k turns left or goes straight on at j.
 template <class T>
 inline bool convex_at(const T* p, i64 i, i64 j, i64 k) {
-  int s = turn(p, i, j, k);
+  int s = orient(p, i, j, k);
   if (s > 0) return true;
   if (s < 0) return false;
   // collinear: straight on (not a spike folding back), i.e. (j - i) . (k - j) > 0. The dot
@@ -50,7 +43,7 @@ inline i64 find(i64* parent, i64 a) {
 template <class T>
 inline void orient_triangles(const T* p, i64* ids, i64 ntri, bool* keep) {
   for (i64 t = 0; t < ntri; ++t) {
-    int s = turn(p, ids[3 * t], ids[3 * t + 1], ids[3 * t + 2]);
+    int s = orient(p, ids[3 * t], ids[3 * t + 1], ids[3 * t + 2]);
     keep[t] = s != 0;
     if (s < 0) {
       i64 tmp = ids[3 * t + 1];
@@ -105,7 +98,7 @@ inline i64 hertel_mehlhorn(const T* p, const i64* ids, i64 ntri, const i64* twin
       bin[v] = u;
     }
     for (i64 v = 0; v < nv; ++v)
-      if (bin[v] >= 0 && bout[v] >= 0 && !reflex[v]) reflex[v] = turn(p, bin[v], v, bout[v]) < 0;
+      if (bin[v] >= 0 && bout[v] >= 0 && !reflex[v]) reflex[v] = orient(p, bin[v], v, bout[v]) < 0;
     for (int want = 0; want <= 2; ++want)
       for (i64 h = 0; h < H; ++h)
         if (twin[h] > h && reflex[org[h]] + reflex[org[twin[h]]] == want) order.push_back(h);
@@ -122,8 +115,8 @@ inline i64 hertel_mehlhorn(const T* p, const i64* ids, i64 ntri, const i64* twin
       i64 u = org[h], v = org[t];
       // at u the merged face runs origin(pn) -> u -> dest(tn) = origin(next(tn))
       if (strict) {
-        if (turn(p, org[pn], u, org[nxt[tn]]) <= 0) continue;
-        if (turn(p, org[tp], v, org[nxt[nn]]) <= 0) continue;
+        if (orient(p, org[pn], u, org[nxt[tn]]) <= 0) continue;
+        if (orient(p, org[tp], v, org[nxt[nn]]) <= 0) continue;
       } else {
         if (!convex_at(p, org[pn], u, org[nxt[tn]])) continue;
         if (!convex_at(p, org[tp], v, org[nxt[nn]])) continue;
@@ -155,7 +148,7 @@ inline i64 hertel_mehlhorn(const T* p, const i64* ids, i64 ntri, const i64* twin
     // is collinear with its original neighbours), then start at the bottom-most one
     i64 k = 0;
     for (i64 i = 0; i < m; ++i)
-      if (turn(p, buf[(i + m - 1) % m], buf[i], buf[(i + 1) % m]) != 0) out[n_out + k++] = buf[i];
+      if (orient(p, buf[(i + m - 1) % m], buf[i], buf[(i + 1) % m]) != 0) out[n_out + k++] = buf[i];
     for (i64 i = 0; i < k; ++i) buf[i] = out[n_out + i];
     i64 best = 0;
     for (i64 i = 1; i < k; ++i) {

@@ -471,4 +471,12 @@ inline bool fp_contract_off_selftest() {
   return detail::compare(P, N) == 0;
 }
 
+// Exact sign of the turn i -> j -> k of points in a flat (n, 2) coordinate array: the one
+// index form of cross_sign (convex, decompose and triangulate use it).
+template <class T>
+inline int orient(const T* p, i64 i, i64 j, i64 k) {
+  return cross_sign(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1], p[2 * i], p[2 * i + 1],
+                    p[2 * k], p[2 * k + 1]);
+}
+
 }  // namespace mk
