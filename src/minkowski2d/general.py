@@ -463,42 +463,50 @@ MAX_CONVOLUTION_SEGMENTS = 1 << 22
 MAX_CROSSINGS = 1 << 21
 
 _METHOD_CODE = {"auto": 0, None: 0, "decomposition": 1, "convolution": 2}
+_USED = {0: "flat", 1: "decomposition", 2: "convolution"}
+
+
+_NO_PIECES = (np.empty((0, 2)), np.zeros(1, np.int64))
 
 
 def _table(preps: list[_Prepared], with_pieces: list[bool], decomposition: str) -> tuple:
     """The operands (and the pieces of those flagged) as the core's ragged arrays."""
-    xs, ros, pos, kinds, pcs, pcoffs, opc = [], [], [], [], [], [], [0]
-    n = r = q = 0
-    op_off = [0]
-    for p, want in zip(preps, with_pieces, strict=True):
-        c, ro, po = p.rings()
-        xs.append(c)
-        ros.append(ro[1:] + n)
-        pos.append(po[1:] + r)
-        n += len(c)
-        r += len(ro) - 1
-        op_off.append(op_off[-1] + len(po) - 1)
-        kinds.append(0 if not p.flat else (1 if len(c) == 1 else 2))
-        if want and not p.flat:
-            pc = p.pieces(decomposition)
-            pcs.append(np.asarray(pc.coords, np.float64))
-            pcoffs.append(pc.offsets[1:] + q)
-            q += len(pc.coords)
-            opc.append(opc[-1] + len(pc))
-        else:
-            opc.append(opc[-1])
-    cat = lambda arrs, dt, shape: (  # noqa: E731
-        np.ascontiguousarray(np.concatenate(arrs), dtype=dt) if arrs else np.empty(shape, dt)
+    rings = [p.rings() for p in preps]
+    ns = np.array([len(c) for c, _, _ in rings], np.int64)
+    nr = np.array([len(ro) - 1 for _, ro, _ in rings], np.int64)
+    npo = np.array([len(po) - 1 for _, _, po in rings], np.int64)
+    cn = np.concatenate(([0], np.cumsum(ns)))
+    cr = np.concatenate(([0], np.cumsum(nr)))
+    xy = np.concatenate([c for c, _, _ in rings]) if rings else np.empty((0, 2))
+    ro = np.concatenate([[0]] + [r[1:] + cn[k] for k, (_, r, _) in enumerate(rings)])
+    po = np.concatenate([[0]] + [p[1:] + cr[k] for k, (_, _, p) in enumerate(rings)])
+    op_off = np.concatenate(([0], np.cumsum(npo)))
+    kinds = np.array(
+        [0 if not p.flat else (1 if n == 1 else 2) for p, n in zip(preps, ns)], np.int8
     )
+    pcs = [
+        p.pieces(decomposition) if want and not p.flat else None
+        for p, want in zip(preps, with_pieces, strict=True)
+    ]
+    if not any(pc is not None for pc in pcs):
+        pc_xy, pc_off = _NO_PIECES
+        opc = np.zeros(len(preps) + 1, np.int64)
+    else:
+        counts = np.array([0 if pc is None else len(pc) for pc in pcs], np.int64)
+        have = [pc for pc in pcs if pc is not None]
+        pn = np.concatenate(([0], np.cumsum([len(pc.coords) for pc in have])))
+        pc_xy = np.concatenate([np.asarray(pc.coords, np.float64) for pc in have])
+        pc_off = np.concatenate([[0]] + [pc.offsets[1:] + pn[k] for k, pc in enumerate(have)])
+        opc = np.concatenate(([0], np.cumsum(counts)))
     return (
-        cat(xs, np.float64, (0, 2)),
-        np.concatenate([[0], *ros]).astype(np.int64) if ros else np.zeros(1, np.int64),
-        np.concatenate([[0], *pos]).astype(np.int64) if pos else np.zeros(1, np.int64),
-        np.asarray(op_off, np.int64),
-        np.asarray(kinds, np.int8),
-        cat(pcs, np.float64, (0, 2)),
-        np.concatenate([[0], *pcoffs]).astype(np.int64) if pcoffs else np.zeros(1, np.int64),
-        np.asarray(opc, np.int64),
+        np.ascontiguousarray(xy, np.float64),
+        ro.astype(np.int64),
+        po.astype(np.int64),
+        op_off.astype(np.int64),
+        kinds,
+        np.ascontiguousarray(pc_xy, np.float64),
+        np.asarray(pc_off, np.int64),
+        opc.astype(np.int64),
     )
 
 
@@ -558,13 +566,9 @@ def _sums(
     call (two when the default method finds that a pair needs the convex pieces). With
     ``used``, the method each pair was computed by is appended to it."""
     from ._core import _ext
-    from ._dispatch import Status
 
     code = _METHOD_CODE[method]
-    want = [False] * len(preps)
-    if method == "decomposition":
-        for k in np.unique(np.concatenate([ia, ib])):
-            want[k] = True
+    want = [method == "decomposition"] * len(preps)
 
     def call(sel: np.ndarray, code: int) -> tuple:
         T = _table(preps, want, decomposition)
@@ -579,10 +583,13 @@ def _sums(
             threads,
         )
 
-    allk = np.arange(len(ia))
-    xy, ro, po, pair_off, status, meth = call(allk, code)
+    xy, ro, po, pair_off, status, meth = call(slice(None), code)
     out = geometries(xy, ro, po, pair_off)
-    redo = np.flatnonzero(status == Status.RANGE)
+    if not status.any():
+        if used is not None:
+            used.extend(_USED[int(m)] for m in meth)
+        return out
+    redo = np.flatnonzero(status == _ext.RANGE)
     if len(redo):
         # the default method found the convolution too large: the pieces, for these pairs
         for k in np.unique(np.concatenate([ia[redo], ib[redo]])):
@@ -592,13 +599,45 @@ def _sums(
         status[redo] = st2
         meth[redo] = m2
     if used is not None:
-        names_of = {0: "flat", 1: "decomposition", 2: "convolution"}
-        used.extend(names_of[int(m)] for m in meth)
-    bad = np.flatnonzero(status != Status.OK)
+        used.extend(_USED[int(m)] for m in meth)
+    bad = np.flatnonzero(status != _ext.OK)
     if len(bad):
         k = int(bad[0])
         raise _status_error(int(status[k]), names[k][0], names[k][1], method or "auto")
     return out
+
+
+def _plain_ring(x: Any) -> np.ndarray | None:
+    """``x`` when it is a plain ring the core can take as it is: a float64 (n, 2) ndarray
+    (n >= 3); None for anything else (the general reader decides)."""
+    if type(x) is np.ndarray and x.dtype == np.float64 and x.ndim == 2 and x.shape[1] == 2:
+        if x.shape[0] >= 3:
+            return np.ascontiguousarray(x)
+    return None
+
+
+def _pair_fast(a: np.ndarray, b: np.ndarray, method: str | None) -> Any:
+    """``A ⊕ B`` of two plain rings in one compiled call (validated there); None when a
+    ring needs the general reader (no area, or a ring that pinches itself)."""
+    from ._core import _ext
+    from ._polygon import Invalid, problem_error, rings_of_array
+
+    status, which, reason, ring, vertex, xy, ro, po = _ext.general_pair(
+        a, b, _METHOD_CODE[method], MAX_CONVOLUTION_SEGMENTS, MAX_PIECE_PAIRS, MAX_CROSSINGS
+    )
+    if status == _ext.OK:
+        return geometries(xy, ro, po, np.array([0, len(po) - 1], np.int64))[0]
+    if status == _ext.RANGE or (
+        status == _ext.INVALID_POLYGON
+        and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA)
+    ):
+        return None
+    if which >= 0:
+        name = "ab"[which]
+        raise problem_error(
+            status, reason, ring, vertex, rings_of_array(a if which == 0 else b), name, _HINT
+        )
+    raise _status_error(int(status), "a", "b", method or "auto")
 
 
 def minkowski_sum_general(
@@ -668,6 +707,12 @@ def minkowski_sum_general(
     """
     method = _options.choice(method, "method", (None, *SUM_METHODS))
     decomposition = _options.choice(decomposition, "decomposition", DECOMPOSITIONS)
+    if decomposition == "hertel-mehlhorn":
+        ra, rb = _plain_ring(a), _plain_ring(b)
+        if ra is not None and rb is not None:
+            g = _pair_fast(ra, rb, method)
+            if g is not None:
+                return g
     pa, pb = _Prepared(a, "a"), _Prepared(b, "b")
     if pa.flat and pb.flat:
         raise ShapeError(

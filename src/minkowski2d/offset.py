@@ -11,15 +11,17 @@ the vertices (the convex ones for a grow, the reflex ones for a shrink).
 
 Construction
 ------------
-Every edge ``ab`` gives one *piece*: ``a``, ``b``, the edge moved out by ``r`` and, when
-``b`` is convex on that side, a polygon around the arc of ``b``, which spans exactly the
-exterior angle ``θ`` of ``b`` from tangent to tangent. ``approx="outer"`` uses a
-circumscribed polygon (``k = ceil(θ / φ)`` corners at distance ``r / cos(φ/2)``, with
-``r (1/cos(φ/2) − 1) ≤ ε``), ``approx="inner"`` an inscribed one (``k`` chords, sagitta
-``r (1 − cos(φ/2)) ≤ ε``); choosing ``k`` with ``ceil`` is what keeps the error within
-``ε``. A grow is ``P ∪ pieces``; a shrink is ``P \\ pieces`` with the pieces built on the
-inner side. Every outer piece contains the part of the true offset whose nearest point of
-``∂P`` lies on its edge or at its end vertex, and lies within ``r + ε`` of that edge, so
+Computed by the compiled core (``_core/offset.hpp``) in one call per polygon, or per
+batch: every ring, with the offset side on its right, gives a closed *offset curve* —
+the moved edges joined, at each vertex that is convex on that side, by a polygon around
+its arc (``approx="outer"``: ``k = ceil(θ / φ)`` circumscribed corners, ``r (1/cos(φ/2) −
+1) ≤ ε``; ``approx="inner"``: ``k`` inscribed chords, ``r (1 − cos(φ/2)) ≤ ε``), and by a
+detour through the vertex elsewhere. The curve is the polygon's boundary plus the
+boundaries of one *piece* per edge (the edge and its moved copy) and per arc, so its
+winding number is ``[x ∈ P] + #pieces containing x``: a grow is where it is at least 1,
+one exact overlay (a shrink builds the pieces inside and keeps ``P \\ pieces``). Every
+piece is checked with exact predicates to cover the band of width ``r`` (outer) and to
+stay within ``r + ε`` of the polygon, so
 
 * grow, outer: ``P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + ε)``; inner: ``P ⊕ D(r − ε) ⊆ result ⊆ P ⊕ D(r)``;
 * shrink, outer: ``P ⊖ D(r) ⊆ result ⊆ P ⊖ D(r − ε)``; inner: ``P ⊖ D(r + ε) ⊆ result ⊆ P ⊖ D(r)``.
@@ -28,23 +30,13 @@ For a grow ``P ⊕ D(r + ε) = (P ⊕ D(r)) ⊕ D(ε)``, so "within ε" is the H
 An erosion is not continuous in ``r`` (a neck of width ``2r`` closes), so for a shrink the
 guarantee is stated, as above, as a sandwich between the erosions by ``r`` and ``r ∓ ε``.
 
-The pieces' boundaries telescope into the *offset curve* (moved edges, arc polygons at
-convex vertices, a detour through each reflex vertex) plus ``∂P``, so a grow is where the
-curve's winding number is positive. Trimmed at every reflex vertex where the two moved
-edges cross (the cut-off loop lies inside both neighbouring pieces), the curve is usually
-a set of disjoint simple rings: then, checked by one GEOS validity test, they *are* the
-result and no Boolean operation runs. Otherwise (a gap, slot or hole closes, a shrink
-splits or erases parts) GEOS unions the pieces, merged first into chunks of consecutive
-pieces whose rings are simple (each then bounds exactly its pieces' union).
-
-The unions are computed by GEOS in float64. Their vertices are rounded, so the pieces are
-built for the radius ``r ± m`` with the *rounding margin* ``m = ROUNDING_MARGIN · (max |x| +
-r)`` (:data:`ROUNDING_MARGIN` = 2⁻⁴²): a vertex moved by rounding can never cross the
-true boundary, and the arcs get the budget ``ε − 2m``. A tolerance below ``4m`` cannot be
-met in float64 and raises :class:`~minkowski2d.errors.GeometryError`. An input whose
-magnitude lies outside ``[2**-256, 2**256]`` is rescaled by a power of two (exact) into
-GEOS's comfortable range and back; Fractions and
-integers beyond 2⁵³ are rounded to float64 once (also within the margin).
+The overlay's vertices are exact until its output, where each crossing is rounded to the
+nearest float64; the pieces are certified with a margin of that rounding (below one unit
+in the last place of the result's largest coordinate), so the rounded result keeps the
+guarantee. The least tolerance this allows is about ``2**-43 · r + 2**-46 · max |x|``
+(``docs/offset.md``); a smaller one raises a :class:`~minkowski2d.errors.GeometryError`.
+Fractions and integers beyond 2⁵³ are rounded to float64 once, and that rounding is part
+of the margin.
 
 Examples
 --------
@@ -61,55 +53,63 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
 from . import _options
 from ._coerce import as_array
-from ._geos import area_parts, checked_polygonal
 from .errors import (
+    EmptyGeometryError,
     GeometryError,
+    NonFiniteError,
     OverflowGeometryError,
+    ResourceLimitError,
     ShapeError,
 )
 from .predicates import orient_array
 
-__all__ = ["offset", "offset_arcs", "OffsetArcs", "ROUNDING_MARGIN", "APPROX", "JOINS"]
-
-#: Relative size of the rounding margin ``m = ROUNDING_MARGIN · (max |coordinate| + r)``
-#: by which the pieces are pushed away from the true boundary, so that float64 rounding
-#: of the union's vertices (a few units in the last place) cannot cross it.
-ROUNDING_MARGIN = 2.0**-42
+__all__ = [
+    "offset",
+    "offset_arcs",
+    "OffsetArcs",
+    "DEFAULT_TOLERANCE",
+    "VERIFY_RESOLUTION",
+    "APPROX",
+    "JOINS",
+]
 
 #: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
-#: (raised to the least tolerance float64 can guarantee at the input's magnitude, see
-#: :data:`ROUNDING_MARGIN`, when that is larger).
+#: (raised to the least tolerance float64 can guarantee at the input's magnitude when
+#: that is larger).
 DEFAULT_TOLERANCE = 1e-3
-
-#: The tolerance actually used is at most this fraction of the radius (a coarser one is
-#: met by a finer approximation).
-_MAX_REL_TOLERANCE = 0.5
-
-#: Magnitudes GEOS handles without underflow or overflow in its intersection arithmetic;
-#: outside this range the input is scaled by a power of two (exactly) and back.
-_COMFORT_LO, _COMFORT_HI = 2.0**-256, 2.0**256
 
 APPROX = ("outer", "inner")
 JOINS = ("round", "miter", "square")
-
-#: Largest arc angle one corner of an outer (circumscribed) approximation may cover; a
-#: coarse tolerance gives no fewer corners than this (quarter-turn) allows.
-_MAX_STEP_OUTER = math.pi / 2
-_MAX_STEP_INNER = math.pi
+_JOIN_CODE = {"round": 0, "miter": 1, "square": 2}
 
 
 # --------------------------------------------------------------------------------------
 # input
 
 
+class _Input(NamedTuple):
+    """One polygonal set for the core: rings (closing repeats allowed), which rings are
+    holes, whether overlapping parts must be united first, and a bound on the distance
+    between these float64 rings and the caller's exact input."""
+
+    xy: np.ndarray  # (N, 2) float64
+    ring_off: np.ndarray  # (R + 1,) int64
+    hole: np.ndarray  # (R,) int64
+    unite: bool
+    delta: float
+
+
 def _is_many(x: Any) -> bool:
     """True when ``x`` is a collection of polygons rather than one polygon."""
+    if type(x) in (list, tuple) and x and type(x[0]) in (list, tuple) and len(x[0]) == 2:
+        if not isinstance(x[0][0], (list, tuple, np.ndarray)):
+            return False  # a list of points: one polygon
     name = type(x).__name__
     if name in ("GeoSeries", "GeometryArray"):
         return True
@@ -129,13 +129,60 @@ def _finite_float(v: Any, name: str) -> float:
     return _options.real(v, name)
 
 
-def _check_shapely(geom: Any, name: str) -> Any:
+_HINT = "repair it: the boundary must not cross itself, holes must lie inside"
+_NONFINITE_HINT = "remove NaN and inf"
+
+
+def _flat(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Coordinates (closing repeats kept), ring offsets and polygon offsets of shapely
+    Polygons (empty ones dropped)."""
+    import shapely
+
+    if len(geoms) == 1 and shapely.lib.get_num_interior_rings(geoms[0]) == 0:
+        xy = shapely.get_coordinates(geoms[0])
+        return xy, np.array([0, len(xy)], np.int64), _GEOM1
+    rings, part = shapely.get_rings(geoms, return_index=True)
+    xy = shapely.get_coordinates(rings)
+    ring_off = np.zeros(len(rings) + 1, np.int64)
+    np.cumsum(shapely.get_num_coordinates(rings), out=ring_off[1:])
+    starts = np.r_[0, np.flatnonzero(np.diff(part)) + 1]  # each polygon's shell
+    poly_off = np.r_[starts, len(rings)].astype(np.int64)
+    return np.ascontiguousarray(xy, np.float64), ring_off, poly_off
+
+
+def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
+    """Rings checked exactly by the core (the check of ``_polygon.check``: simple rings,
+    holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
+    by the core before offsetting (``unite``; for a MultiPolygon, found by the same
+    check)."""
+    from ._core import _ext
+
+    verdict = _ext.check_polygons_f(xy, ring_off, poly_off, False)
+    if verdict[0]:
+        from ._polygon import Rings, problem_error
+
+        raise problem_error(
+            *verdict[:4], Rings(xy, ring_off, poly_off), name, _HINT,
+            nonfinite_hint=_NONFINITE_HINT,
+        )  # fmt: skip
+    if not unite and len(poly_off) > 2 and _ext.check_polygons_f(xy, ring_off, poly_off, True)[0]:
+        unite = True  # a MultiPolygon whose valid parts overlap or share edges
+    if len(ring_off) == 2:
+        return _Input(xy, ring_off, _ZERO1, unite, 0.0)
+    hole = np.ones(len(ring_off) - 1, np.int64)
+    hole[poly_off[:-1]] = 0
+    return _Input(xy, ring_off, hole, unite, 0.0)
+
+
+def _shapely_input(geom: Any, name: str) -> _Input:
+    """A shapely ring, polygon, multipolygon or collection of them, validated."""
     import shapely
 
     gt = geom.geom_type
     if gt == "LinearRing":
         geom = shapely.Polygon(geom)
         gt = "Polygon"
+    unite = False
     if gt == "GeometryCollection":
         parts = shapely.get_parts(geom)
         if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
@@ -144,41 +191,66 @@ def _check_shapely(geom: Any, name: str) -> Any:
                 argument=name,
                 hint="pass the polygons only",
             )
-        geom = shapely.union_all(parts)
-        gt = geom.geom_type
-    if gt not in ("Polygon", "MultiPolygon"):
+        polys = shapely.get_parts(parts)
+        unite = len(polys) > 1
+    elif gt == "Polygon":
+        if geom.is_empty:
+            raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
+        return _validated(*_flat([geom]), name, False)
+    elif gt == "MultiPolygon":
+        polys = shapely.get_parts(geom)
+    else:
         raise ShapeError(
             f"{name}: cannot offset a {gt} here (give a polygon, a ring or an (n, 2) array)",
             argument=name,
             hint="pass the coordinates as an (n, 2) array for a point or a segment",
         )
-    if not geom.is_empty and not shapely.is_valid(geom) and gt == "MultiPolygon":
-        parts = shapely.get_parts(geom)
-        if shapely.is_valid(parts).all():
-            # parts that touch or overlap: their union has the same offset
-            geom = shapely.union_all(parts)
-    return checked_polygonal(
-        geom,
-        name,
-        hint="repair it first, e.g. shapely.make_valid",
-        nonfinite_hint="remove NaN and inf",
+    polys = polys[~shapely.is_empty(polys)]
+    if len(polys) == 0:
+        raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
+    return _validated(*_flat(polys), name, unite)
+
+
+#: constant arrays of the single-polygon call
+_ZERO1 = np.zeros(1, np.int64)
+_ZEROF1 = np.zeros(1, np.float64)
+_GEOM1 = np.array([0, 1], np.int64)
+_POLYGON = 3  # shapely.GeometryType.POLYGON
+
+
+def _one_ring(data: np.ndarray, delta: float) -> _Input:
+    return _Input(
+        np.ascontiguousarray(data, np.float64),
+        np.array([0, len(data)], np.int64),
+        _ZERO1,
+        False,
+        delta,
     )
 
 
-def _read(obj: Any, name: str) -> tuple[list[np.ndarray], Any]:
-    """``(rings, geom)``: float64 rings with the interior on their left (exteriors
-    counter-clockwise, holes clockwise; a point or a segment is a ring of one or two
-    vertices), and the shapely geometry (None for a point or a segment)."""
+def _rounding_error(exact: list, data: np.ndarray) -> float:
+    """An upper bound on the distance between each exact vertex and its float64 value."""
+    worst = Fraction(0)
+    for (x, y), (fx, fy) in zip(exact, data.tolist()):
+        worst = max(worst, abs(Fraction(x) - Fraction(fx)), abs(Fraction(y) - Fraction(fy)))
+    # sqrt(2) < 1.5, and float() of a Fraction rounds to nearest
+    return float(worst) * 1.5
+
+
+def _read(obj: Any, name: str) -> _Input:
+    """The rings of a polygon (any orientation: the core orients them exactly), or a ring
+    of one or two vertices for a point or a segment."""
     import shapely
 
     if type(obj).__module__.startswith("shapely"):
         if obj.geom_type in ("Point", "LineString", "MultiPoint"):
             obj = shapely.get_coordinates(obj)
         else:
-            geom = _check_shapely(obj, name)
-            return _geom_rings(geom), geom
+            return _shapely_input(obj, name)
     data, _kind = as_array(obj, name)
+    delta = 0.0
     if isinstance(data, list):  # Fractions or huge ints: rounded to float64 once
+        exact = data
         try:
             data = np.array([(float(Fraction(x)), float(Fraction(y))) for x, y in data])
         except OverflowError:
@@ -189,510 +261,166 @@ def _read(obj: Any, name: str) -> tuple[list[np.ndarray], Any]:
                 argument=name,
                 hint="scale the input down",
             )
+        delta = _rounding_error(exact, data)
     data = np.asarray(data, dtype=np.float64)
     if len(data) > 1 and (data[0] == data[-1]).all():
         data = data[:-1]
+    if not np.isfinite(data).all():
+        raise NonFiniteError(
+            f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
+        )
+    from ._polygon import Invalid, probe, rings_of_array
+
+    rings = rings_of_array(data)
     if len(data) >= 3:
-        # the common case: a valid ring with area (the float shoelace only picks this
-        # path; GEOS's robust orientation test decides the direction)
-        x, y = data[:, 0], data[:, 1]
-        with np.errstate(all="ignore"):
-            area2 = float(x @ np.roll(y, -1) - y @ np.roll(x, -1))
-        if area2 != 0.0 and math.isfinite(area2):
-            geom = shapely.Polygon(data)
-            if shapely.is_valid(geom):
-                if not shapely.is_ccw(geom.exterior):
-                    data = data[::-1].copy()
-                    geom = shapely.Polygon(data)
-                return [data], geom
+        status, reason = probe(rings)[:2]
+        if status == 0:
+            return _one_ring(data, delta)  # the common case: a valid ring (exact check)
+        if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
+            _validated(*rings, name, False)  # raises the core's verdict
+    # a point, a segment, or collinear points: a degenerate convex set
     from .convex import convex_hull
 
-    hull = np.asarray(convex_hull(data), dtype=np.float64)
-    if len(hull) <= 2:
-        return [hull], None
-    geom = _check_shapely(shapely.Polygon(data), name)
-    return _geom_rings(geom), geom
-
-
-def _geom_rings(geom: Any) -> list[np.ndarray]:
-    import shapely
-
-    rings = shapely.get_rings(shapely.get_parts(geom))
-    return [shapely.get_coordinates(r)[:-1] for r in rings]
-
-
-def _clean(ring: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
-    """Drop repeated and exactly collinear vertices (exact orientation); a spike (a turn
-    of a half-turn) is kept: it is a convex vertex of exterior angle π. Returns the ring
-    and the exact orientation of each vertex's turn (None for fewer than 3 vertices)."""
-    if len(ring) <= 2:
-        return ring, None
-    same = (ring == ring[np.arange(1, len(ring) + 1) % len(ring)]).all(axis=1)
-    if same.any():
-        ring = ring[~same]
-    while True:  # removing a vertex can make its neighbours collinear: repeat
-        n = len(ring)
-        if n <= 2:
-            return ring, None
-        prv = ring[np.arange(-1, n - 1) % n]
-        nxt = ring[np.arange(1, n + 1) % n]
-        o = orient_array(prv, ring, nxt)
-        if not (o == 0).any():
-            return ring, o
-        dot = ((ring - prv) * (nxt - ring)).sum(axis=1)
-        keep = ~((o == 0) & (dot > 0))
-        if keep.all():
-            return ring, o
-        ring = ring[keep]
+    return _one_ring(np.asarray(convex_hull(data), dtype=np.float64), delta)
 
 
 # --------------------------------------------------------------------------------------
-# pieces
+# the core call
 
 
-def _step(r: float, eps: float, m: float, kind: str) -> float:
-    """The largest arc angle one corner (outer) or chord (inner) may span."""
-    if kind == "outer":
-        # corners at (r + m) / cos(φ/2), rounded by up to m: need that ≤ r + ε
-        c = (r + m) / (r + eps - m)
-        return min(2.0 * math.acos(min(c, 1.0)), _MAX_STEP_OUTER)
-    # chords of the circle r − m: the sagitta plus rounding, r − (r − m) cos(φ/2) + m ≤ ε
-    c = (r - eps + m) / (r - m)
-    if c <= -1.0:
-        return _MAX_STEP_INNER
-    return min(2.0 * math.acos(min(c, 1.0)), _MAX_STEP_INNER)
+def _distance_error(distance: Any, d: float) -> float:
+    """How far the float64 distance is from the caller's exact one (ints, Fractions)."""
+    if isinstance(distance, (float, np.floating)) or d == 0:
+        return 0.0
+    try:
+        return float(abs(Fraction(distance) - Fraction(d))) * 1.5
+    except (TypeError, ValueError):
+        return 0.0
 
 
-_DETOUR = -(2**62)
+def _run(
+    inputs: list[_Input],
+    d: float,
+    tol: float | None,
+    approx: str,
+    join: str,
+    lim: float,
+    extra_delta: float = 0.0,
+    labels: bool = False,
+) -> tuple:
+    """One compiled call for all ``inputs``: the raw result of ``_ext.offset_rings``."""
+    from ._core import _ext
 
-
-class _Curve:
-    """The offset curve of one ring whose outside is on its right.
-
-    Per vertex ``j`` (between edge ``j - 1`` and edge ``j``): ``convex[j]`` (exact),
-    ``chain[j]`` the corner points of its arc (circumscribed corners, inscribed chord
-    points with both tangent points, or miter/square corners), ``T[j]`` the tangent point
-    of edge ``j`` at its start and ``E[j]`` that of edge ``j - 1`` at its end (both at
-    distance ``rho``), and for a reflex vertex ``X[j]``, the crossing of the two moved
-    edges, with ``trim[j]`` when it lies on both of them.
-    """
-
-    __slots__ = (
-        "ring",
-        "n",
-        "convex",
-        "chain",
-        "T",
-        "E",
-        "X",
-        "trim",
-        "S",
-        "allc",
-        "cstart",
-        "ccnt",
+    if len(inputs) == 1:
+        a = inputs[0]
+        xy, ro, hole = a.xy, a.ring_off, a.hole
+        go = _GEOM1 if len(ro) == 2 else np.array([0, len(ro) - 1], np.int64)
+    else:
+        xy = np.concatenate([a.xy for a in inputs]) if inputs else np.empty((0, 2))
+        nv = np.cumsum([0] + [len(a.xy) for a in inputs[:-1]])
+        ro = np.concatenate([[0]] + [a.ring_off[1:] + s for a, s in zip(inputs, nv)])
+        hole = np.concatenate([a.hole for a in inputs]) if inputs else np.empty(0, np.int64)
+        go = np.cumsum([0] + [len(a.ring_off) - 1 for a in inputs])
+    if len(inputs) == 1 and not inputs[0].unite and inputs[0].delta + extra_delta == 0:
+        unite, delta = _ZERO1, _ZEROF1
+    else:
+        unite = np.fromiter((a.unite for a in inputs), np.int64, len(inputs))
+        delta = np.fromiter((a.delta + extra_delta for a in inputs), np.float64, len(inputs))
+    if xy.dtype != np.float64 or not xy.flags.c_contiguous:
+        xy = np.ascontiguousarray(xy, np.float64)
+    return _ext.offset_rings(
+        xy,
+        ro,
+        hole,
+        go,
+        unite,
+        delta,
+        d,
+        math.nan if tol is None else tol,
+        DEFAULT_TOLERANCE,
+        approx == "outer",
+        _JOIN_CODE[join],
+        lim,
+        labels,
+        1,
     )
 
-    def __init__(self, ring, rho, step, kind, join, limit, sgn=None):
-        self.ring = ring
-        n = self.n = len(ring)
-        NX = np.arange(1, n + 1) % n
-        PV = np.arange(-1, n - 1) % n
-        nxt = ring[NX]
-        d = nxt - ring  # edge i: ring[i] -> ring[i + 1]
-        L = np.hypot(d[:, 0], d[:, 1])
-        u = d / L[:, None]
-        nrm = np.column_stack([u[:, 1], -u[:, 0]])  # right of the edge: the outside
-        uin = u[PV]
-        nin = nrm[PV]  # normal of the incoming edge, where the arc starts
-        cr = uin[:, 0] * u[:, 1] - uin[:, 1] * u[:, 0]
-        dt = (uin * u).sum(axis=1)
-        if n == 2:
-            sgn = np.zeros(2, np.int8)
-        elif sgn is None:
-            sgn = orient_array(ring[PV], ring, nxt)
-        spike = (sgn == 0) & (dt < 0)
-        convex = (sgn > 0) | spike
-        theta = np.where(convex, np.arctan2(np.abs(cr), dt), 0.0)
-        theta[spike] = math.pi
-        self.convex = convex
-        self.T = ring + rho * nrm
-        self.E = ring + rho * nin
-        # chains
-        chain: list = [None] * n
-        if join == "round":
-            alpha = np.arctan2(nin[:, 1], nin[:, 0])
-            k = np.where(convex, np.maximum(1, np.ceil(theta / step)), 0).astype(np.int64)
-            cnt = k if kind == "outer" else np.where(convex, k + 1, 0)
-            vid = np.repeat(np.arange(n), cnt)
-            start = np.cumsum(cnt) - cnt
-            jj = np.arange(int(cnt.sum())) - start[vid]
-            phi = theta / np.maximum(k, 1)
-            if kind == "outer":
-                a = alpha[vid] + (jj + 0.5) * phi[vid]
-                R = (rho / np.cos(phi / 2))[vid]
-            else:
-                a = alpha[vid] + jj * phi[vid]
-                R = np.full(len(vid), rho)
-            allc = ring[vid] + R[:, None] * np.column_stack([np.cos(a), np.sin(a)])
-            if kind == "inner":
-                allc[start[convex]] = self.E[convex]
-                allc[(start + cnt - 1)[convex]] = self.T[convex]
-            for j in np.flatnonzero(convex):
-                chain[j] = allc[start[j] : start[j] + cnt[j]]
+
+def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
+    """Turn the core's verdict on one polygon into the documented error."""
+    from ._core import _ext
+
+    if code == _ext.OFFSET_TOLERANCE:
+        raise GeometryError(
+            f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
+            f"magnitudes (about {least:.3g})",
+            argument="tolerance",
+            hint="raise the tolerance, or move the polygon nearer to the origin",
+        )
+    if code == _ext.OFFSET_DISTANCE:
+        raise GeometryError(
+            f"distance: {distance!r} is too small for float64 at these magnitudes (the "
+            f"least tolerance it can guarantee, about {least:.3g}, is more than half of it)",
+            argument="distance",
+            hint="move the polygon nearer to the origin, or offset by more",
+        )
+    if code == _ext.OFFSET_UNDERFLOW:
+        raise OverflowGeometryError(
+            "result: the offset underflows float64 (magnitude below 2**-1020: rounding to "
+            "float64 may exceed the guaranteed tolerance)",
+            argument="result",
+            hint="scale the input up by a power of two, and the result down",
+        )
+    if status == _ext.RESOURCE:
+        raise ResourceLimitError(
+            "polygon: the offset's overlay would exceed its work limit",
+            argument="polygon",
+            hint="offset fewer vertices at once, or with a coarser tolerance",
+        )
+    if code == _ext.OFFSET_OVERFLOWS or status == _ext.OVERFLOW:
+        raise OverflowGeometryError(
+            "result: the offset does not fit in float64 (a coordinate is infinite)",
+            argument="result",
+            hint="scale the input down (or offset by a smaller distance)",
+        )
+    if code != _ext.OFFSET_FINE or status != _ext.OK:
+        raise GeometryError(
+            f"polygon: the offset could not be certified (code {code}, status {status})",
+            argument="polygon",
+            hint="this is a bug: please report the input",
+        )
+
+
+def _shapes(res: tuple, distance: Any, tolerance: Any) -> list:
+    """Shapely results, one per polygonal set of the call (errors raised in order)."""
+    import shapely
+
+    xy, ro, po, go, info, _extra = res
+    if info[:, :2].any():
+        for g in range(len(go) - 1):
+            st, cd, least = info[g, :3].tolist()
+            _raise_for(int(cd), int(st), least, distance, tolerance)
+    if len(go) == 2 and len(po) == 2:  # one polygon of one ring or more
+        return [shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))[0]]
+    polys = (
+        shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
+        if len(po) > 1
+        else np.empty(0, object)
+    )
+    out = []
+    for g in range(len(go) - 1):
+        k0, k1 = int(go[g]), int(go[g + 1])
+        if k1 == k0:
+            out.append(shapely.Polygon())
+        elif k1 == k0 + 1:
+            out.append(polys[k0])
         else:
-            half = theta / 2
-            bis = nin + nrm
-            with np.errstate(all="ignore"):
-                mit = ring + rho * bis / (1.0 + (nin * nrm).sum(axis=1))[:, None]
-                h = rho * (limit if join == "miter" else 1.0)
-                t = (h - rho * np.cos(half)) / np.sin(half)
-            for j in np.flatnonzero(convex):
-                if join == "miter" and math.cos(half[j]) * limit >= 1.0:
-                    chain[j] = mit[j][None, :]
-                else:
-                    q1 = self.E[j] + t[j] * uin[j]
-                    q2 = self.T[j] - t[j] * u[j]
-                    chain[j] = np.vstack([q1, q2])
-        self.chain = chain
-        if join != "round":
-            ccnt = np.array([0 if c is None else len(c) for c in chain], np.int64)
-            cstart = np.cumsum(ccnt) - ccnt
-            allc = np.concatenate([c for c in chain if c is not None] or [np.empty((0, 2))])
-        else:
-            ccnt, cstart = cnt, start
-        self.allc, self.cstart, self.ccnt = allc, cstart, ccnt
-        # S[i]: where the moved edge i starts on the curve
-        S = self.T.copy()
-        for j in np.flatnonzero(convex):
-            S[j] = chain[j][-1]
-        self.S = S
-        # trimming at reflex vertices
-        reflex = sgn < 0
-        with np.errstate(all="ignore"):
-            X = ring + rho * (nin + nrm) / (1.0 + (nin * nrm).sum(axis=1))[:, None]
-            tau = rho * np.tan(np.arctan2(np.abs(cr), dt) / 2)
-        self.X = X
-        # extent of moved edge i along u_i, measured from ring[i]
-        p0 = ((S - ring) * u).sum(axis=1)
-        first = np.array([c[0] if c is not None else [np.nan, np.nan] for c in chain])
-        cb = convex[NX][:, None]
-        endpt = np.where(cb, first[NX], self.E[NX])
-        p1 = ((endpt - ring) * u).sum(axis=1)
-        trim = reflex & np.isfinite(tau)
-        for _ in range(n + 1):
-            a0 = p0 + np.where(trim, tau, 0.0)
-            a1 = p1 - np.where(trim[NX], tau[NX], 0.0)
-            bad = ~(a0 <= a1)
-            if not bad.any():
-                break
-            trim &= ~(bad | bad[PV])
-        self.trim = trim
-
-    def closed(self) -> tuple[np.ndarray, np.ndarray]:
-        """The whole curve, trimmed at every trimmable reflex vertex, and a label for
-        each of its segments (point ``k`` to ``k + 1``): edge ``i`` moved (``i``), the arc
-        of vertex ``j`` (``-1 - j``), or a detour through a vertex (:data:`_DETOUR`)."""
-        n, conv, trim = self.n, self.convex, self.trim
-        b = np.arange(1, n + 1) % n
-        head = (~conv & ~trim).astype(np.int64)  # T_i before the edge's tail
-        cb, tb = conv[b], trim[b]
-        tcnt = np.where(cb, self.ccnt[b], np.where(tb, 1, 2))
-        per = head + tcnt
-        off = np.cumsum(per) - per
-        total = int(per.sum())
-        # every point's source: T (n), chain corners, X (n), E (n), ring (n)
-        nc = len(self.allc)
-        src = np.concatenate([self.T, self.allc, self.X, self.E, self.ring])
-        bT, bC, bX, bE, bR = 0, n, n + nc, 2 * n + nc, 3 * n + nc
-        idx = np.empty(total, np.int64)
-        lab = np.empty(total, np.int64)
-        hi = np.flatnonzero(head)
-        idx[off[hi]] = bT + hi
-        lab[off[hi]] = hi
-        # tails: position within the tail j, edge e
-        e = np.repeat(np.arange(n), tcnt)
-        j = np.arange(int(tcnt.sum())) - np.repeat(np.cumsum(tcnt) - tcnt, tcnt)
-        pos = off[e] + head[e] + j
-        be = b[e]
-        isc = cb[e]
-        ist = ~isc & tb[e]
-        isd = ~isc & ~tb[e]
-        idx[pos[isc]] = bC + self.cstart[be[isc]] + j[isc]
-        last = j == self.ccnt[be] - 1
-        lab[pos[isc]] = np.where(last[isc], be[isc], -1 - be[isc])
-        idx[pos[ist]] = bX + be[ist]
-        lab[pos[ist]] = be[ist]
-        idx[pos[isd]] = np.where(j[isd] == 0, bE, bR) + be[isd]
-        lab[pos[isd]] = _DETOUR
-        return src[idx], lab
-
-    def chunk(self, i0: int, i1: int) -> np.ndarray:
-        """The ring of edges ``i0..i1`` (inclusive, cyclic): from ``ring[i0]`` along the
-        curve and back along the polygon. Its interior is the union of the edges' pieces
-        when it is simple and counter-clockwise."""
-        n, conv, trim = self.n, self.convex, self.trim
-        out = [self.ring[i0][None, :], self.S[i0][None, :]]
-        cnt = (i1 - i0) % n
-        for q in range(cnt + 1):
-            i = (i0 + q) % n
-            if q > 0 and not conv[i] and not trim[i]:
-                out.append(self.T[i][None, :])
-            b = (i + 1) % n
-            if conv[b]:
-                out.append(self.chain[b])
-            elif trim[b] and q < cnt:
-                out.append(self.X[b][None, :])
-            elif q < cnt:
-                out.append(np.vstack([self.E[b], self.ring[b]]))
-            else:
-                out.append(self.E[b][None, :])
-        idx = (i0 + np.arange(cnt + 1, 0, -1)) % n
-        out.append(self.ring[idx])
-        return np.concatenate(out)
-
-
-def _point_disk(c: np.ndarray, rho: float, step: float, kind: str) -> np.ndarray:
-    t = 2.0 * math.pi
-    k = max(3, math.ceil(t / step))
-    if kind == "outer":
-        a = (np.arange(k) + 0.5) * (t / k)
-        R = rho / math.cos(t / k / 2)
-    else:
-        a = np.arange(k) * (t / k)
-        R = rho
-    return c + R * np.column_stack([np.cos(a), np.sin(a)])
-
-
-def _linearrings(rings: list[np.ndarray]) -> np.ndarray:
-    import shapely
-
-    lens = np.fromiter((len(c) for c in rings), np.int64, len(rings))
-    ids = np.repeat(np.arange(len(rings)), lens)
-    return shapely.linearrings(np.concatenate(rings), indices=ids)
-
-
-def _assemble(rings: list[np.ndarray]) -> tuple[Any, list] | None:
-    """The polygon whose winding number is that of the closed curves ``rings``, and its
-    polygons as lists of ring indices (shell first); None when the rings are not disjoint
-    simple rings that nest into a valid (multi)polygon."""
-    import shapely
-
-    if not rings:
-        return None
-    lr = _linearrings(rings)
-    ccw = shapely.is_ccw(lr)
-    si = np.flatnonzero(ccw)
-    hi = np.flatnonzero(~ccw)
-    if len(si) == 0:
-        return None
-    if len(si) == 1:
-        groups = [[int(si[0]), *hi.tolist()]]
-    else:
-        shells = shapely.polygons(lr[si])
-        areas = shapely.area(shells)
-        groups = [[int(k)] for k in si]
-        for h in hi:
-            pt = shapely.points(rings[h][0])
-            inside = np.flatnonzero(shapely.contains(shells, pt))
-            if not len(inside):
-                return None
-            groups[int(inside[np.argmin(areas[inside])])].append(int(h))
-    polys = [shapely.Polygon(lr[g[0]], lr[g[1:]]) for g in groups]
-    geom = polys[0] if len(polys) == 1 else shapely.MultiPolygon(polys)
-    return (geom, groups) if shapely.is_valid(geom) else None
-
-
-def _chunks_union(curves: list[_Curve], size: int = 64) -> Any:
-    """Union of every edge's piece, computed from chunks of consecutive pieces whose
-    rings are simple and counter-clockwise (each then bounds exactly the union of its
-    pieces); a chunk that is not is split until single pieces remain."""
-    import shapely
-
-    polys = []
-    for cv in curves:
-        todo = [(i, min(i + size, cv.n) - 1) for i in range(0, cv.n, size)]
-        while todo:
-            rings = [cv.chunk(i0, i1) for i0, i1 in todo]
-            lr = _linearrings(rings)
-            pg = shapely.polygons(lr)
-            ok = shapely.is_valid(pg) & shapely.is_ccw(lr)
-            single = np.array([i0 == i1 for i0, i1 in todo])
-            polys.extend(pg[ok | single])
-            nxt = []
-            for (i0, i1), good in zip(todo, ok):
-                if not good and i1 > i0:
-                    mid = (i0 + i1) // 2
-                    nxt += [(i0, mid), (mid + 1, i1)]
-            todo = nxt
-    return polys
+            out.append(shapely.MultiPolygon(list(polys[k0:k1])))
+    return out
 
 
 # --------------------------------------------------------------------------------------
 # the offset
-
-
-def _result(geom: Any) -> Any:
-    import shapely
-
-    g = area_parts(geom)
-    if g.is_empty:
-        return g
-    # each ring from its least (x, y) vertex; exteriors counter-clockwise, holes clockwise
-    return shapely.orient_polygons(shapely.normalize(g))
-
-
-def _drop_slivers(out: Any, geom: Any, gap: float, grow: bool) -> Any:
-    """Remove the zero-width slivers that float noding can leave where pieces share an
-    edge: a hole of a grow (or a part of a shrink) nearer than ``gap`` to the polygon (its
-    boundary). Every true hole (part) lies at least ``gap`` away: that is the guarantee
-    itself (``gap`` is its lower distance bound less twice the rounding margin)."""
-    import shapely
-
-    if out.is_empty or geom is None:
-        return out
-    polys = list(shapely.get_parts(out))
-    bnd = shapely.boundary(geom) if not grow else geom
-    shapely.prepare(bnd)  # an indexed distance test
-    keep = []
-    changed = False
-    for p in polys:
-        if not grow:
-            if shapely.dwithin(bnd, p, gap):
-                changed = True
-                continue
-            keep.append(p)
-            continue
-        if len(p.interiors):
-            hs = shapely.polygons(list(p.interiors))
-            ok = ~shapely.dwithin(bnd, hs, gap)
-            if not ok.all():
-                changed = True
-                p = shapely.Polygon(p.exterior, [h for h, k in zip(p.interiors, ok) if k])
-        keep.append(p)
-    if not changed:
-        return out
-    if not keep:
-        return shapely.Polygon()
-    return keep[0] if len(keep) == 1 else shapely.MultiPolygon(keep)
-
-
-def _scale_exponent(rings: list[np.ndarray], r: float) -> int:
-    """The power of two that brings the largest magnitude near 1, or 0 when it already
-    lies in GEOS's comfortable range ``[2**-256, 2**256]``."""
-    big = max([float(np.abs(x).max()) for x in rings] + [r])
-    if _COMFORT_LO <= big <= _COMFORT_HI:
-        return 0
-    # at most 2**1000 either way, so that the factor itself is a finite float
-    return max(-1000, min(1000, -math.frexp(big)[1]))
-
-
-def _offset_one(
-    obj: Any,
-    distance: float,
-    tolerance: float | None,
-    approx: str,
-    join: str,
-    limit: float,
-    read: tuple | None = None,
-    info: dict | None = None,
-) -> Any:
-    import shapely
-
-    rings, geom = read if read is not None else _read(obj, "polygon")
-    cleaned = [_clean(x) for x in rings]
-    rings = [c[0] for c in cleaned]
-    sgns = [c[1] for c in cleaned]
-    if distance == 0:
-        return _result(geom) if geom is not None else shapely.Polygon()
-    r0 = abs(distance)
-    e = _scale_exponent(rings, r0)
-    s = math.ldexp(1.0, e)
-    if e:
-        rings = [x * s for x in rings]
-    r = r0 * s
-    big = max(float(np.abs(x).max()) for x in rings)
-    m = ROUNDING_MARGIN * (big + r)
-    grow = distance > 0
-    if join == "round":
-        # a tolerance beyond half the radius is met by a finer approximation
-        if tolerance is None:  # the default: relative to r, at least what float64 can meet
-            eps = min(max(DEFAULT_TOLERANCE * r, 4 * m * (1 + 2.0**-20)), r * _MAX_REL_TOLERANCE)
-        else:
-            eps = min(tolerance * s, r * _MAX_REL_TOLERANCE)
-        if eps < 4 * m and tolerance is None:
-            raise GeometryError(
-                f"distance: {distance!r} is too small for float64 at these magnitudes (the "
-                f"least tolerance it can guarantee, about {math.ldexp(4 * m, -e):.3g}, is "
-                "more than half of it)",
-                argument="distance",
-                hint="move the polygon nearer to the origin, or offset by more",
-            )
-        if eps < 4 * m:
-            raise GeometryError(
-                f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
-                f"magnitudes (about {math.ldexp(4 * m, -e):.3g})",
-                argument="tolerance",
-                hint="raise the tolerance, or move the polygon nearer to the origin",
-            )
-        # the pieces' side of the error: grow outer and shrink inner use circumscribed
-        # pieces pushed out by m; the other two inscribed pieces pulled in by m
-        circ = (approx == "outer") == grow
-        kind = "outer" if circ else "inner"
-        rho = r + m if circ else r - m
-        step = _step(r, eps, m, kind)
-    else:
-        kind = "sharp"
-        rho = r
-        step = eps = 0.0
-    if geom is not None and e:
-        geom = shapely.transform(geom, lambda c: c * s)
-    if len(rings) == 1 and len(rings[0]) == 1:
-        if not grow:
-            return shapely.Polygon()
-        if kind == "sharp":
-            kind, step = "outer", _MAX_STEP_OUTER
-        disk = shapely.Polygon(_point_disk(rings[0][0], rho, step, kind))
-        return shapely.transform(disk, lambda c: c / s)
-    if not grow:
-        if geom is None:
-            return shapely.Polygon()
-        rings = [x[::-1] for x in rings]
-        sgns = [None if o is None else -o[::-1] for o in sgns]
-    ckind = "outer" if kind == "sharp" else kind
-    curves = [_Curve(x, rho, step, ckind, join, limit, o) for x, o in zip(rings, sgns)]
-    closed, labels = [], []
-    for c in curves:
-        pts, lab = c.closed()
-        if not grow:  # the curve of the reversed rings, reversed back
-            pts, lab = pts[::-1], np.roll(lab[::-1], -1)
-        # start each ring at its least (x, y) vertex, as shapely.normalize does
-        k = int(np.lexsort((pts[:, 1], pts[:, 0]))[0])
-        closed.append(np.roll(pts, -k, 0))
-        labels.append(np.roll(lab, -k))
-    asm = _assemble(closed)
-    fast = asm is not None
-    if fast:
-        out = asm[0]
-    else:
-        polys = _chunks_union(curves)
-        if grow:
-            if geom is not None:
-                polys = [geom, *polys]
-            out = shapely.union_all(polys)
-        else:
-            out = shapely.difference(geom, shapely.union_all(polys))
-        # the least distance of the result's boundary from the polygon('s boundary)
-        near = r if (join != "round" or (approx == "outer") == grow) else r - eps
-        # slivers come from GEOS noding only
-        out = _drop_slivers(_result(out), geom, near - 2 * m, grow)
-    if info is not None:
-        info.update(
-            scale=s, rings=rings, r=r, grow=grow, fast=fast, scaled=out,
-            closed=closed, labels=labels, groups=asm[1] if fast else None,
-        )  # fmt: skip
-    if e:
-        out = shapely.transform(out, lambda c: c / s)
-    return out
 
 
 def _list_result(res: list) -> np.ndarray:
@@ -701,28 +429,53 @@ def _list_result(res: list) -> np.ndarray:
     return out
 
 
-def _map(fn: Any, polygon: Any) -> Any:
-    """Apply ``fn`` to one polygon, or to each polygon of a container (same kind out)."""
+def _batch(polys: list, fn_args: tuple) -> list:
+    """Offsets of a list of polygons (None stays None): one compiled call."""
+    d, tol, approx, join, lim, distance, tolerance = fn_args
+    idx = [k for k, g in enumerate(polys) if g is not None]
+    inputs = [_read(polys[k], "polygon") for k in idx]
+    out: list = [None] * len(polys)
+    if inputs:
+        res = _run(inputs, d, tol, approx, join, lim, _distance_error(distance, d))
+        for k, g in zip(idx, _shapes(res, distance, tolerance)):
+            out[k] = g
+    return out
+
+
+def _map(polygon: Any, fn_args: tuple) -> Any:
+    """Offset one polygon, or each polygon of a container (same kind out)."""
     if not _is_many(polygon):
-        return fn(polygon)
+        return _batch([polygon], fn_args)[0]
     from ._containers import apply, boxed
 
     if boxed(polygon):
         # GeoSeries / GeometryArray / object arrays: the shared container rules
         return apply(
-            lambda ps: _list_result([None if g is None else fn(g) for g in ps]),
+            lambda ps: _list_result(_batch(list(ps), fn_args)),
             polygon,
             convex=False,
             names=("polygon",),
         )
     # lists and tuples of polygons (containers went through _containers above)
-    res = [None if g is None else fn(g) for g in polygon]
+    res = _batch(list(polygon), fn_args)
     if isinstance(polygon, np.ndarray):
         return _list_result(res)
     return tuple(res) if isinstance(polygon, tuple) else res
 
 
 def _check_options(distance, tolerance, approx, join, miter_limit):
+    if (
+        type(distance) is float
+        and (tolerance is None or type(tolerance) is float)
+        and approx in APPROX
+        and join in JOINS
+        and type(approx) is str
+        and type(join) is str
+        and math.isfinite(distance)
+        and (tolerance is None or (math.isfinite(tolerance) and tolerance > 0))
+        and (type(miter_limit) in (float, int) and math.isfinite(miter_limit) and miter_limit >= 1)
+    ):
+        return distance, tolerance, float(miter_limit)  # the common case, already checked
     d = _finite_float(distance, "distance")
     _options.choice(approx, "approx", APPROX)
     _options.choice(join, "join", JOINS)
@@ -742,6 +495,8 @@ def _check_options(distance, tolerance, approx, join, miter_limit):
                 argument="tolerance",
                 hint="e.g. 1e-3 times the distance",
             )
+        if not isinstance(tolerance, (float, np.floating)) and Fraction(tol) > Fraction(tolerance):
+            tol = math.nextafter(tol, 0.0)  # never a looser tolerance than the one asked for
     return d, tol, lim
 
 
@@ -764,7 +519,8 @@ def offset(
         multipolygon; ints, floats or Fractions. A point or a segment (an array of one or
         two points, or collinear points) grows into a disk or a stadium. A list, tuple,
         numpy object array, GeometryArray or GeoSeries of polygons is offset member by
-        member and the same kind of container is returned (None stays None).
+        member in one compiled call and the same kind of container is returned (None
+        stays None).
     distance : float
         The tool radius ``r = |distance|``: positive grows, negative shrinks (a shrink
         may erase parts or split a polygon into several), zero returns the polygon.
@@ -772,9 +528,8 @@ def offset(
         The largest error ``ε > 0`` (in the input's units) of a round join; unused by
         miter and square joins. Default (None): :data:`DEFAULT_TOLERANCE` ``· |r|`` =
         ``1e-3 · |r|``, or the least tolerance float64 can guarantee at the input's
-        magnitude when that is larger (about ``2**-40 · (max |x| + r)``, see
-        :data:`ROUNDING_MARGIN`). The one-sided guarantee below holds for the tolerance
-        used, given or default.
+        magnitude when that is larger (about ``2**-43 · r + 2**-46 · max |x|``). The
+        one-sided guarantee below holds for the tolerance used, given or default.
     approx : {"outer", "inner"}
         Which side of the true set the result lies on (see Returns).
     join : {"round", "miter", "square"}
@@ -788,23 +543,25 @@ def offset(
     Returns
     -------
     shapely.Polygon or shapely.MultiPolygon
-        Valid, exteriors counter-clockwise and holes clockwise; an empty Polygon when a
-        shrink erases everything. For ``join="round"`` and ``approx="outer"``: a grow
-        satisfies ``P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + ε)`` and a shrink
+        Valid, exteriors counter-clockwise and holes clockwise, each ring from its least
+        (x, y) vertex; an empty Polygon when a shrink erases everything. For
+        ``join="round"`` and ``approx="outer"``: a grow satisfies
+        ``P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + ε)`` and a shrink
         ``P ⊖ D(r) ⊆ result ⊆ P ⊖ D(r − ε)``; for ``approx="inner"``:
         ``P ⊕ D(r − ε) ⊆ result ⊆ P ⊕ D(r)`` and ``P ⊖ D(r + ε) ⊆ result ⊆ P ⊖ D(r)``.
         Each arc of exterior angle ``θ`` gets ``ceil(θ / φ)`` corners (outer; ``φ`` from
         ``r (1/cos(φ/2) − 1) ≤ ε``) or ``ceil(θ / φ) + 1`` vertices (inner; ``φ`` from
-        ``r (1 − cos(φ/2)) ≤ ε``), tangent at both ends of the arc. Miter and square
-        joins are exact up to the rounding margin; ``approx`` then says on which side of
-        the exact polygon the margin puts the result.
+        ``r (1 − cos(φ/2)) ≤ ε``). Miter and square joins are polygons computed in
+        float64 (``approx`` and ``tolerance`` unused).
 
     Raises
     ------
     GeometryError
         ``distance``, ``tolerance`` or ``miter_limit`` is not a finite number in range
         (``argument`` names which), or the tolerance is below what float64 can guarantee
-        at the input's magnitude (see the module notes on the rounding margin).
+        at the input's magnitude.
+    OverflowGeometryError
+        The result does not fit in float64, or its magnitude is below ``2**-1020``.
     SelfIntersectionError, ShapeError, EmptyGeometryError, NonFiniteError
         Bad polygon.
 
@@ -814,11 +571,10 @@ def offset(
 
     Notes
     -----
-    One piece per edge (the moved edge and the arc polygon of its end vertex), then one
-    GEOS union (grow) or difference (shrink): O(n + V) pieces' vertices with V the arc
-    vertices, union O((n + V) log(n + V)) in GEOS. Every convex/reflex decision is an
-    exact orientation; the coordinates are float64 with the rounding margin described in
-    the module notes.
+    One compiled call: O(n + V) curve vertices (V the arc vertices), certified by exact
+    predicates in O(n + V), then one exact overlay, O((n + V + k) log(n + V)) for k
+    crossings of the curve (where gaps, slots and holes close). Every decision is an
+    exact sign; see ``docs/offset.md``.
 
     Examples
     --------
@@ -834,32 +590,18 @@ def offset(
     'POLYGON ((-1 -1, 3 -1, 3 3, -1 3, -1 -1))'
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
-    return _map(lambda p: _finite_result(_offset_one, p, d, tol, approx, join, lim), polygon)
-
-
-def _finite_result(fn: Any, *args: Any) -> Any:
-    """``fn(*args)``, a shapely result, refused when a coordinate overflowed float64
-    (an OverflowGeometryError, never inf)."""
-    import shapely
-
-    with np.errstate(over="ignore", invalid="ignore"):
-        out = fn(*args)
-    if not out.is_empty:
-        big = float(np.abs(shapely.get_coordinates(out)).max())
-        if not math.isfinite(big):
-            raise OverflowGeometryError(
-                "result: the offset does not fit in float64 (a coordinate is infinite)",
-                argument="result",
-                hint="scale the input down (or offset by a smaller distance)",
-            )
-        _check_underflow(big)
-    return out
+    if not _is_many(polygon):
+        # one polygon: the shortest way through
+        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim,
+                   _distance_error(distance, d))  # fmt: skip
+        return _shapes(res, distance, tolerance)[0]
+    return _map(polygon, (d, tol, approx, join, lim, distance, tolerance))
 
 
 def _check_underflow(big: float) -> None:
     """Refuse results whose magnitude ``big`` is so small that rounding them to float64
-    (to multiples of 2**-1074) may exceed the rounding margin, which keeps the error on
-    its side: an OverflowGeometryError (an underflow), never a result off its side."""
+    (to multiples of 2**-1074) may exceed the margin that keeps the error on its side:
+    an OverflowGeometryError (an underflow), never a result off its side."""
     if 0.0 < big < _UNDERFLOW:
         raise OverflowGeometryError(
             f"result: the offset underflows float64 (magnitude {big!r}: rounding to float64 "
@@ -880,10 +622,15 @@ _UNDERFLOW = 2.0**-1020
 #: coordinate is written as a straight segment (it cannot be told from one in float64).
 ARC_STRAIGHT_ULPS = 4
 
-#: A traced junction nearer to the polygon than ``r − _JUNCTION_SLACK · (max |x| + r)``
-#: is not on the true boundary (a piece was too short for the trace): the nearest feature
-#: is inserted there, at most ``_MAX_REPAIRS`` rounds.
-_JUNCTION_SLACK = 2.0**-30
+#: The resolution of :func:`offset_arcs`' verification, relative to ``r``: a junction is
+#: on the exact boundary when its distance from the polygon is ``r`` to within
+#: ``VERIFY_RESOLUTION · r`` (or the least tolerance float64 guarantees at the input's
+#: magnitude, when that is larger), and a piece runs forwards when its extent is not
+#: negative by more than that. It judges junctions computed in float64 from exact
+#: features; which features bound the offset comes from the exact overlay.
+VERIFY_RESOLUTION = 2.0**-30
+#: At most this many rounds of repairs (a feature inserted where a junction is nearer
+#: than ``r`` to the polygon, a piece that runs backwards dropped).
 _MAX_REPAIRS = 8
 
 #: The relative tolerances of the polygons that :func:`offset_arcs` traces to find which
@@ -1192,24 +939,69 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r, sign) -> np.ndarray:
     return J
 
 
+def _nearest(pts, A0, U, L, VS, VE, reach: float, chunk: int = 64) -> tuple:
+    """Label of the nearest feature of the polygon (edge ``e`` >= 0 for its interior,
+    ``-1 - v`` for vertex ``v``) and the distance, for each point (float64: a
+    construction for the repairs and the verification, not a decision of the offset).
+    The points come in boundary order, so consecutive ones are close: a chunk of them
+    looks at the edges whose boxes come within ``R`` of the chunk's box (``R`` from
+    ``reach`` up, doubled until every point has found an edge within ``R``: no other
+    edge can then be nearer)."""
+    n = len(pts)
+    lab = np.empty(n, np.int64)
+    dist = np.empty(n)
+    A1 = A0 + L[:, None] * U
+    lo, hi = np.minimum(A0, A1), np.maximum(A0, A1)
+    span = float(np.ptp(np.concatenate([pts, A0]), axis=0).max()) + 1.0
+    for s in range(0, n, chunk):
+        P = pts[s : s + chunk]
+        p0, p1 = P.min(axis=0), P.max(axis=0)
+        R = max(reach, 1e-300)
+        while True:
+            cand = np.flatnonzero(((hi >= p0 - R) & (lo <= p1 + R)).all(axis=1))
+            if len(cand):
+                w = P[:, None, :] - A0[None, cand, :]
+                t = np.clip((w * U[None, cand]).sum(-1), 0.0, L[None, cand])
+                q = w - t[..., None] * U[None, cand]
+                d2 = (q * q).sum(-1)
+                k = d2.argmin(axis=1)
+                rows = np.arange(len(P))
+                best = np.sqrt(d2[rows, k])
+                if best.max() <= R or len(cand) == len(L) or R > span:
+                    e = cand[k]
+                    te = t[rows, k]
+                    lab[s : s + chunk] = np.where(
+                        te <= 0, -1 - VS[e], np.where(te >= L[e], -1 - VE[e], e)
+                    )
+                    dist[s : s + chunk] = best
+                    break
+            R *= 2
+    return lab, dist
+
+
 def _trace(
-    items: list, rings: list[np.ndarray], r: float, sign: float, repairs: int = _MAX_REPAIRS
+    items: list,
+    rings: list[np.ndarray],
+    r: float,
+    sign: float,
+    slack: float,
+    repairs: int = _MAX_REPAIRS,
 ) -> tuple[list, bool]:
     """Exact rings of segments and arcs.
 
     ``items``: polygons, each a list of rings ``(coords, labels)`` tracing the offset
-    (``labels`` per segment as in :meth:`_Curve.closed`, local to ring ``k`` of ``rings``
-    as ``(k, labels)``, or None to label each segment by the nearest feature). ``rings``:
-    the polygon's rings with the offset side on their right (moved by ``r``); ``sign``:
-    +1 when the arcs turn counter-clockwise (a grow), -1 (a shrink).
+    (``labels`` per segment: the moved edge ``e`` (>= 0) or the arc of vertex ``v``
+    (``-1 - v``) it lies on, from the core's overlay; None to label each segment by the
+    nearest feature). ``rings``: the polygon's rings with the offset side on their right
+    (moved by ``r``); ``sign``: +1 when the arcs turn counter-clockwise (a grow), -1 (a
+    shrink); ``slack``: the verification's resolution.
     """
-    import shapely
+    from ._core import _ext
 
-    starts, ends, vid_s, vid_e, ebase = [], [], [], [], []
+    starts, ends, vid_s, vid_e = [], [], [], []
     base = 0
     for ring in rings:
         n = len(ring)
-        ebase.append(base)
         idx = np.arange(n)
         if n >= 2:
             starts.append(ring)
@@ -1235,11 +1027,9 @@ def _trace(
         np.arctan2(ui[:, 0] * uo[:, 1] - ui[:, 1] * uo[:, 0], (ui * uo).sum(axis=1)), 0.0
     )
     alpha_in = np.arctan2(N[ein, 1], N[ein, 0])  # where each vertex's arc starts
-    tree = None
     verified = [True]
     big = max(float(np.abs(V).max()), r)
     tiny = ARC_STRAIGHT_ULPS * math.ulp(big)
-    slack = _JUNCTION_SLACK * (big + r)
 
     def extents(la, J, strict=False):
         """Each piece's extent, negative when it runs backwards: along its moved edge
@@ -1273,29 +1063,15 @@ def _trace(
 
     def nearest(pts):
         """Label of the nearest feature (edge interior or vertex) and its distance."""
-        qi, ei = tree.query_nearest(shapely.points(pts), all_matches=False)
-        e = np.empty(len(pts), np.int64)
-        e[qi] = ei
-        t = ((pts - A0[e]) * U[e]).sum(axis=1)
-        lab = np.where(t <= 0, -1 - VS[e], np.where(t >= L[e], -1 - VE[e], e))
-        foot = A0[e] + np.clip(t, 0, L[e])[:, None] * U[e]
-        return lab, np.hypot(*(pts - foot).T)
+        return _nearest(pts, A0, U, L, VS, VE, 2 * r)
 
     polys = []
     for item in items:
         out_rings = []
         for c, lab in item:
-            if lab is not None:
-                ring_k, loc = lab
-                if (loc == _DETOUR).any():
-                    lab = None
-                else:
-                    b0 = ebase[ring_k]
-                    lab = np.where(loc >= 0, loc + b0, loc - b0)
-            traced = lab is None
-            if traced:
-                if tree is None:
-                    tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
+            if lab is not None and (lab == _ext.OFFSET_DETOUR).any():
+                lab = None  # never expected: the overlay's boundary avoids detours
+            if lab is None:
                 lab, _ = nearest((c + np.roll(c, -1, 0)) / 2)
             chg = np.flatnonzero(lab != np.roll(lab, 1))
             if len(chg) == 0:
@@ -1342,8 +1118,6 @@ def _trace(
                         continue
                 # a junction nearer than r to the polygon is not on the true boundary: a
                 # piece too short for the trace lies between; insert the nearest feature
-                if tree is None:
-                    tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
                 f, dist = nearest(J)
                 bad = np.flatnonzero(dist < r - slack)
                 changed = False
@@ -1357,8 +1131,6 @@ def _trace(
                     break
                 J = _junctions(np.array(labels), near, MA0, MA1, U, V, VS, VE, r, sign)
             # verify: every junction on the true boundary, every piece of positive extent
-            if tree is None:
-                tree = shapely.STRtree(shapely.linestrings(np.stack([A0, A1], 1)))
             _, dist = nearest(J)
             ext = extents(np.array(labels), J, strict=True)
             if (np.abs(dist - r) > slack).any() or (ext < 0).any():
@@ -1423,12 +1195,13 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
 
     Notes
     -----
-    Which pieces bound the offset, and in which order, is read from an outer polygon
-    approximation at ``1e-2 · r`` (each of its edges is labelled with the nearest feature
-    of the polygon: an edge's interior or a vertex); the junctions are then computed
-    exactly from the pieces. An arc shorter than that approximation resolves, at a
-    crossing, is not seen (its end points differ from the crossing by less than
-    ``1e-2 · r``).
+    Which pieces bound the offset, and in which order, is read from the certified outer
+    polygon approximation at ``1e-2 · r`` computed by the core: each of its edges lies on
+    a moved edge or an arc polygon of one feature, which the exact overlay reports. The
+    junctions are then computed from the pieces in float64 and verified to
+    :data:`VERIFY_RESOLUTION` (refined at ``1e-4 · r`` and ``1e-6 · r`` when they do not
+    verify). An arc shorter than that approximation resolves, at a crossing, is not seen
+    (its end points differ from the crossing by less than ``1e-2 · r``).
 
     Examples
     --------
@@ -1446,64 +1219,73 @@ def offset_arcs(polygon: Any, distance: float) -> OffsetArcs:
             argument="distance",
             hint="give a positive (grow) or negative (shrink) distance",
         )
-    rings, geom = _read(polygon, "polygon")
-    _check_underflow(max([float(np.abs(x).max()) for x in rings] + [abs(d)]))
-    if len(rings) == 1 and len(rings[0]) == 1:
+    inp = _read(polygon, "polygon")
+    _check_underflow(max(float(np.abs(inp.xy).max()) if len(inp.xy) else 0.0, abs(d)))
+    if len(inp.ring_off) == 2 and inp.ring_off[1] == 1:
         if d < 0:
             return OffsetArcs([], d, polygon)
-        cx, cy = (float(v) for v in rings[0][0])
+        cx, cy = (float(v) for v in inp.xy[0])
         r = abs(d)
         ring = np.array([[cx + r, cy, 1.0, cx, cy], [cx - r, cy, 1.0, cx, cy]])
         return OffsetArcs([[ring]], d, polygon)
-    import shapely
+    from ._core import _ext
 
     best = None
+    ok = plausible = False
     for rel in _TRACE_TOLERANCES:
-        info: dict = {}
-        region = _offset_one(
-            polygon, d, rel * abs(d), "outer", "round", 2.0, read=(rings, geom), info=info
-        )
-        if region.is_empty:
+        res = _run([inp], d, rel * abs(d), "outer", "round", 2.0,
+                   _distance_error(distance, d), labels=True)  # fmt: skip
+        xy, ro, po, _go, info, extra = res
+        status, code, least = int(info[0, 0]), int(info[0, 1]), float(info[0, 2])
+        if code == _ext.OFFSET_TOLERANCE and best is not None:
+            break  # finer than float64 allows at this magnitude: keep the best so far
+        _raise_for(code, status, least, distance, rel * abs(d))
+        if len(po) == 1:
             return OffsetArcs([], d, polygon)
-        if info["fast"]:
-            closed, labels = info["closed"], info["labels"]
-            # each closed curve came from ring k of the rings (same order)
-            items = [[(closed[k], (k, labels[k])) for k in g] for g in info["groups"]]
-        else:
-            items = [
-                [(shapely.get_coordinates(x)[:-1], None) for x in [p.exterior, *p.interiors]]
-                for p in shapely.get_parts(info["scaled"])
-            ]
+        lab, uxy, uoff, e0 = extra
+        r = math.ldexp(abs(d), -e0)
+        rings = [uxy[uoff[k] : uoff[k + 1]] for k in range(len(uoff) - 1)]
+        # the traced outer polygon (scaled by 2**-e0): rings with the label of each edge
+        items = [
+            [(xy[ro[k] : ro[k + 1] - 1], lab[ro[k] : ro[k + 1] - 1]) for k in range(a, b)]
+            for a, b in zip(po[:-1].tolist(), po[1:].tolist())
+        ]
+        seg = xy[1:] - xy[:-1]
+        closing = np.zeros(len(xy) - 1, bool)
+        closing[ro[1:-1] - 1] = True  # no segment from one ring's end to the next's start
+        seg = seg[~closing]
+        length = float(np.hypot(seg[:, 0], seg[:, 1]).sum())
+        x0, y0 = xy[:-1, 0][~closing], xy[:-1, 1][~closing]
+        x1, y1 = xy[1:, 0][~closing], xy[1:, 1][~closing]
+        reg_area = 0.5 * float((x0 * y1 - x1 * y0).sum())
+        parts, holes = len(po) - 1, (len(ro) - 1) - (len(po) - 1)
         # the exact set lies inside the traced outer polygon, within a band of width
         # rel·r along its boundary, and it has the traced polygon's topology
-        reg = info["scaled"]
-        parts = shapely.get_parts(reg)
-        holes = int(shapely.get_num_interior_rings(parts).sum())
-        band = reg.length * rel * info["r"]
-        slack_a = _JUNCTION_SLACK * reg.area
+        slack = max(VERIFY_RESOLUTION * r, math.ldexp(least, -e0))
+        band = length * rel * r
+        slack_a = slack * length
+        sign = 1.0 if d > 0 else -1.0
         for repairs in (0, _MAX_REPAIRS):
-            polys, ok = _trace(items, info["rings"], info["r"], 1.0 if d > 0 else -1.0, repairs)
-            area = OffsetArcs(polys, info["r"]).area
+            polys, ok = _trace(items, rings, r, sign, slack, repairs)
+            area = OffsetArcs(polys, r).area
             plausible = (
-                len(polys) == len(parts)
+                len(polys) == parts
                 and sum(len(p) - 1 for p in polys) == holes
-                and reg.area - band - slack_a <= area <= reg.area + slack_a
+                and reg_area - band - slack_a <= area <= reg_area + slack_a
             )
             if plausible and best is None:
-                best = (polys, info)
+                best = (polys, e0)
             if ok and plausible:
                 break
         if ok and plausible:
-            best = (polys, info)
+            best = (polys, e0)
             break
     verified = bool(ok and plausible)
     if best is not None:
-        polys, info = best
-    s = info["scale"]
-    if s != 1.0:
-        for p in polys:
-            for ring in p:
-                ring[:, [0, 1, 3, 4]] /= s
+        polys, e0 = best
+    for p in polys:
+        for ring in p:
+            ring[:, [0, 1, 3, 4]] = np.ldexp(ring[:, [0, 1, 3, 4]], e0)
     out = OffsetArcs(polys, d, polygon, verified)
     if not all(np.isfinite(ring[:, :3]).all() for ring in out.rings):
         raise OverflowGeometryError(

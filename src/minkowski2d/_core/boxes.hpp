@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <type_traits>
 #include <vector>
@@ -23,6 +24,19 @@
 #include "exact.hpp"
 
 namespace mk {
+
+// The neighbouring doubles (std::nextafter without the library call): +-inf and NaN
+// stay, the neighbours of zero are the smallest subnormals.
+inline double next_up(double x) {
+  if (!(x - x == 0)) return x;
+  if (x == 0) return 0x1p-1074;
+  u64 b;
+  std::memcpy(&b, &x, sizeof b);
+  b = x > 0 ? b + 1 : b - 1;
+  std::memcpy(&x, &b, sizeof b);
+  return x;
+}
+inline double next_down(double x) { return -next_up(-x); }
 
 template <class F, class C = double>
 void box_pairs(i64 n, const C* xmin, const C* xmax, const C* ymin, const C* ymax, F&& on_pair) {
@@ -70,6 +84,227 @@ void box_pairs(i64 n, const C* xmin, const C* xmax, const C* ymin, const C* ymax
     active.resize(keep);
     active.push_back(i);
   }
+}
+
+}  // namespace mk
+
+namespace mk {
+
+// Scratch of box_pairs_grouped, reusable across calls (no allocation once grown).
+struct BoxScratch {
+  std::vector<i64> order;
+  std::vector<std::vector<i64>> active;
+  struct Box {
+    double x0, x1, y0, y1;
+    i64 i;
+    int g;
+  };
+  std::vector<Box> sorted;
+};
+
+// box_pairs_grouped for few boxes: sorted by the left side, each box scans forward over
+// the boxes that start before its right side ends (contiguous, no active lists).
+template <class F>
+inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const double* ymin,
+                           const double* ymax, const int* group, BoxScratch& s, F&& on_pair) {
+  auto& b = s.sorted;
+  b.resize(n);
+  for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
+  std::sort(b.begin(), b.end(), [](const BoxScratch::Box& p, const BoxScratch::Box& q) {
+    return p.x0 < q.x0 || (p.x0 == q.x0 && p.i < q.i);
+  });
+  for (i64 t = 0; t < n; ++t) {
+    const BoxScratch::Box a = b[t];
+    for (i64 u = t + 1; u < n && b[u].x0 <= a.x1; ++u) {
+      const BoxScratch::Box& c = b[u];
+      if (c.y0 > a.y1 || a.y0 > c.y1) continue;
+      if (a.g >= 0 && c.g == a.g) continue;
+      const i64 i = a.i < c.i ? a.i : c.i, j = a.i < c.i ? c.i : a.i;
+      if constexpr (std::is_same_v<decltype(on_pair(i, j)), bool>) {
+        if (!on_pair(i, j)) return false;
+      } else {
+        on_pair(i, j);
+      }
+    }
+  }
+  return true;
+}
+
+// Like box_pairs, but a box of group g in [0, ngroups) is never paired with another box
+// of group g (group -1: paired with every box). With few groups each keeps its own
+// active list and a box scans only the others' (a red-blue sweep for two groups);
+// otherwise one list and same-group pairs are skipped.
+template <class F>
+inline bool box_pairs_grouped(i64 n, const double* xmin, const double* xmax,
+                              const double* ymin, const double* ymax, const int* group,
+                              int ngroups, BoxScratch& s, F&& on_pair) {
+  constexpr int LISTS = 16;
+  const int G = ngroups <= LISTS ? ngroups : 0;  // G lists + one for group -1
+  s.order.resize(n);
+  std::iota(s.order.begin(), s.order.end(), 0);
+  std::sort(s.order.begin(), s.order.end(), [&](i64 a, i64 b) { return xmin[a] < xmin[b]; });
+  if ((int)s.active.size() < G + 1) s.active.resize(G + 1);
+  for (int k = 0; k <= G; ++k) s.active[k].clear();
+  auto pair = [&](i64 i, i64 j) -> bool {
+    if constexpr (std::is_same_v<decltype(on_pair(i, j)), bool>) {
+      return on_pair(i < j ? i : j, i < j ? j : i);
+    } else {
+      on_pair(i < j ? i : j, i < j ? j : i);
+      return true;
+    }
+  };
+  for (i64 t = 0; t < n; ++t) {
+    const i64 i = s.order[t];
+    const double x = xmin[i], y0 = ymin[i], y1 = ymax[i];
+    const int gi = group[i];
+    const int own = G > 0 ? (gi >= 0 && gi < G ? gi : G) : 0;
+    for (int k = 0; k <= G; ++k) {
+      if (G > 0 && k == own && own != G) continue;
+      std::vector<i64>& act = s.active[k];
+      std::size_t w = 0;
+      for (std::size_t q = 0; q < act.size(); ++q) {
+        const i64 j = act[q];
+        if (xmax[j] < x) continue;
+        act[w++] = j;
+        if (ymin[j] <= y1 && y0 <= ymax[j] && (gi < 0 || group[j] != gi)) {
+          if (!pair(i, j)) {
+            // keep the list consistent for a later call (the scratch is reused)
+            for (++q; q < act.size(); ++q) act[w++] = act[q];
+            act.resize(w);
+            return false;
+          }
+        }
+      }
+      act.resize(w);
+    }
+    s.active[own].push_back(i);
+  }
+  return true;
+}
+
+}  // namespace mk
+
+namespace mk {
+
+// Scratch of segment_pairs (reused: no allocation once grown).
+struct GridScratch {
+  std::vector<i64> reg_start, reg_cell, cell_start, cell_edge, stamp;
+};
+
+// Candidate pairs of segments by a uniform grid: segment i runs from (ax, ay) to (bx, by)
+// up to tol[i] in each coordinate (the exact segment lies in the approximate one widened
+// by a square of half-side tol[i]); it is registered in every cell its widened row spans
+// reach, and on_pair(j, i), j < i, is called once for each pair of different groups
+// (group -1: any) that share a cell and whose boxes (x0, x1, y0, y1) overlap. Every pair
+// of segments with a common point is among them. on_pair may return false to stop.
+// Long edges are cheap here (a box sweep keeps them active over their whole x-range).
+template <class F>
+inline bool segment_pairs(i64 n, const double* ax, const double* ay, const double* bx,
+                          const double* by, const double* tol, const double* x0,
+                          const double* x1, const double* y0, const double* y1,
+                          const int* group, GridScratch& s, F&& on_pair) {
+  if (n < 2) return true;
+  double X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
+  for (i64 i = 0; i < n; ++i) {
+    X0 = std::min(X0, x0[i]);
+    X1 = std::max(X1, x1[i]);
+    Y0 = std::min(Y0, y0[i]);
+    Y1 = std::max(Y1, y1[i]);
+  }
+  const double W = X1 - X0, H = Y1 - Y0;
+  if (!(W < INFINITY && H < INFINITY)) return false;  // the caller falls back
+  const double target = (double)n;
+  double cs = std::sqrt(W * H / target);
+  if (!(cs > 0)) cs = std::max(W, H) / target;
+  const i64 nx = cs > 0 ? (i64)std::min(4096.0, std::max(1.0, std::ceil(W / cs))) : 1;
+  const i64 ny = cs > 0 ? (i64)std::min(4096.0, std::max(1.0, std::ceil(H / cs))) : 1;
+  const double ix = W > 0 ? (double)nx / W : 0.0, iy = H > 0 ? (double)ny / H : 0.0;
+  const double hy = H / (double)ny;
+  // cell indices by floor, widened by DELTA cells (far above their rounding errors)
+  constexpr double DELTA = 1e-6;
+  auto cx_lo = [&](double x) {
+    double t = std::floor((x - X0) * ix - DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)nx ? nx - 1 : (i64)t);
+  };
+  auto cx_hi = [&](double x) {
+    double t = std::floor((x - X0) * ix + DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)nx ? nx - 1 : (i64)t);
+  };
+  auto cy_lo = [&](double y) {
+    double t = std::floor((y - Y0) * iy - DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)ny ? ny - 1 : (i64)t);
+  };
+  auto cy_hi = [&](double y) {
+    double t = std::floor((y - Y0) * iy + DELTA);
+    return t < 0 ? (i64)0 : (t >= (double)ny ? ny - 1 : (i64)t);
+  };
+  s.reg_start.assign(n + 1, 0);
+  s.reg_cell.clear();
+  for (i64 i = 0; i < n; ++i) {
+    double px = ax[i], py = ay[i], qx = bx[i], qy = by[i];
+    if (py > qy) {
+      std::swap(px, qx);
+      std::swap(py, qy);
+    }
+    const double M = std::max(std::max(std::fabs(px), std::fabs(qx)),
+                              std::max(std::fabs(py), std::fabs(qy)));
+    const double t = tol[i] + 1e-12 * M + 1e-300;
+    const i64 r0 = cy_lo(py - t), r1 = cy_hi(qy + t);
+    for (i64 r = r0; r <= r1; ++r) {
+      double xl, xh;
+      if (r0 == r1 || qy == py) {
+        xl = std::min(px, qx);
+        xh = std::max(px, qx);
+      } else {
+        // the part of the segment within the band (widened by t and a cell fraction)
+        const double b0 = Y0 + (double)r * hy - t - hy * DELTA,
+                     b1 = Y0 + (double)(r + 1) * hy + t + hy * DELTA;
+        const double dy = qy - py;
+        const double u0 = py < b0 ? (b0 - py) / dy : 0.0, u1 = qy > b1 ? (b1 - py) / dy : 1.0;
+        const double xa = px + (qx - px) * std::min(std::max(u0, 0.0), 1.0),
+                     xb = px + (qx - px) * std::min(std::max(u1, 0.0), 1.0);
+        xl = std::min(xa, xb);
+        xh = std::max(xa, xb);
+      }
+      const i64 c0 = cx_lo(xl - t), c1 = cx_hi(xh + t);
+      for (i64 c = c0; c <= c1; ++c) s.reg_cell.push_back(r * nx + c);
+    }
+    s.reg_start[i + 1] = (i64)s.reg_cell.size();
+  }
+  // cell -> segments, ascending
+  const i64 nc = nx * ny, nr = (i64)s.reg_cell.size();
+  s.cell_start.assign(nc + 1, 0);
+  for (i64 k = 0; k < nr; ++k) ++s.cell_start[s.reg_cell[k] + 1];
+  for (i64 c = 0; c < nc; ++c) s.cell_start[c + 1] += s.cell_start[c];
+  s.cell_edge.resize(nr);
+  {
+    std::vector<i64>& fill = s.stamp;  // reused below as the stamps
+    fill.assign(s.cell_start.begin(), s.cell_start.end() - 1);
+    for (i64 i = 0; i < n; ++i)
+      for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k)
+        s.cell_edge[fill[s.reg_cell[k]]++] = i;
+  }
+  s.stamp.assign(n, -1);
+  for (i64 i = 0; i < n; ++i) {
+    const int gi = group[i];
+    for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k) {
+      const i64 c = s.reg_cell[k];
+      for (i64 q = s.cell_start[c]; q < s.cell_start[c + 1]; ++q) {
+        const i64 j = s.cell_edge[q];
+        if (j >= i) break;
+        if (s.stamp[j] == i) continue;
+        s.stamp[j] = i;
+        if (gi >= 0 && group[j] == gi) continue;
+        if (x1[j] < x0[i] || x1[i] < x0[j] || y1[j] < y0[i] || y1[i] < y0[j]) continue;
+        if constexpr (std::is_same_v<decltype(on_pair(j, i)), bool>) {
+          if (!on_pair(j, i)) return true;
+        } else {
+          on_pair(j, i);
+        }
+      }
+    }
+  }
+  return true;
 }
 
 }  // namespace mk

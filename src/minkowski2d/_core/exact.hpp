@@ -179,6 +179,67 @@ inline int cross_sign_exact(double a0x, double a0y, double a1x, double a1y, doub
 }
 
 // Filtered sign of (a1 - a0) x (b1 - b0) for finite doubles.
+// Collinear points are common (shared and overlapping edges) and their exact zero is
+// beyond any filter. Nearby coordinates have exact differences (Sterbenz), and then the
+// determinant is exactly l + lt - (r + rt) with the products and their error-free tails
+// (Dekker): its sign is that of the sum of four doubles, found exactly by an expansion
+// (two_sum; nonoverlapping, zeros dropped; the last component is the largest). Applies
+// when the four differences are exact (two_diff tails zero) and lie within
+// [2^-450, 2^450] (no split overflows, no tail underflows); returns 2 otherwise.
+inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, double b0x,
+                            double b0y, double b1x, double b1y, double ux, double uy, double vx,
+                            double vy) {
+  auto exact_diff = [](double a, double b, double d) {
+    double bv = a - d, av = d + bv;
+    return (a - av) + (bv - b) == 0.0;
+  };
+  auto in_range = [](double d) {
+    double m = std::fabs(d);
+    return m >= 0x1p-450 && m <= 0x1p450;
+  };
+  if (!(in_range(ux) && in_range(uy) && in_range(vx) && in_range(vy))) return 2;
+  if (!(exact_diff(a1x, a0x, ux) && exact_diff(a1y, a0y, uy) && exact_diff(b1x, b0x, vx) &&
+        exact_diff(b1y, b0y, vy)))
+    return 2;
+  auto prod_tail = [](double a, double b, double p) {
+    double c = SPLITTER * a;
+    double ahi = c - (c - a), alo = a - ahi;
+    c = SPLITTER * b;
+    double bhi = c - (c - b), blo = b - bhi;
+    double err = ((p - ahi * bhi) - alo * bhi) - ahi * blo;
+    return alo * blo - err;
+  };
+  auto tsum = [](double a, double b, double& x, double& y) {
+    x = a + b;
+    double bv = x - a, av = x - bv;
+    y = (a - av) + (b - bv);
+  };
+  const double l = ux * vy, r = uy * vx;
+  const double lt = prod_tail(ux, vy, l), rt = prod_tail(uy, vx, r);
+  if (lt == 0.0 && rt == 0.0) return (l > r) - (l < r);
+  // e = l - r as a nonoverlapping expansion, then + lt, then - rt (grow, zeros dropped)
+  double e[4];
+  int m = 0;
+  {
+    double x, y;
+    tsum(l, -r, x, y);
+    if (y != 0.0) e[m++] = y;
+    if (x != 0.0 || m == 0) e[m++] = x;
+  }
+  for (double b : {lt, -rt}) {
+    double q = b, hh;
+    int h = 0;
+    for (int k = 0; k < m; ++k) {
+      tsum(q, e[k], q, hh);
+      if (hh != 0.0) e[h++] = hh;
+    }
+    if (q != 0.0 || h == 0) e[h++] = q;
+    m = h;
+  }
+  const double top = e[m - 1];
+  return (top > 0) - (top < 0);
+}
+
 inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x, double b0y,
                       double b1x, double b1y) {
   double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
@@ -192,6 +253,8 @@ inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
+  int s = cross_sign_small(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, ux, uy, vx, vy);
+  if (s != 2) return s;
   return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
 }
 

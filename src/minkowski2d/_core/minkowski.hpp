@@ -27,9 +27,13 @@
 #include <vector>
 
 #include "convex.hpp"
+#include "decompose.hpp"
 #include "exact.hpp"
 #include "exactnum.hpp"
 #include "overlay.hpp"
+#include "polygon.hpp"
+#include "triangulate.hpp"
+#include "union.hpp"
 
 namespace mk {
 namespace ms {
@@ -377,6 +381,57 @@ inline i64 conv_count(const std::vector<Polygon>& A, const std::vector<Polygon>&
   return cnt;
 }
 
+// The convex pieces of operand `op` (validated polygons): the exact triangulation of
+// triangulate.hpp, merged by Hertel-Mehlhorn (decompose.hpp). Coordinates appended to
+// pc_xy, piece offsets (absolute, into pc_xy's points) to pc_off (which starts at 0).
+inline int operand_pieces(const Table& T, i64 op, std::vector<double>& pc_xy,
+                          std::vector<i64>& pc_off) {
+  const i64 p0 = T.op_off[op], p1 = T.op_off[op + 1];
+  const i64 r0 = T.poly_off[p0], r1 = T.poly_off[p1];
+  // rings of this operand, re-based at their first vertex
+  const i64 v0 = T.ring_off[r0], v1 = T.ring_off[r1];
+  std::vector<i64> ro(r1 - r0 + 1), po(p1 - p0 + 1);
+  for (i64 r = r0; r <= r1; ++r) ro[r - r0] = T.ring_off[r] - v0;
+  for (i64 p = p0; p <= p1; ++p) po[p - p0] = T.poly_off[p] - r0;
+  const double* xy = T.xy + 2 * v0;
+  std::vector<i64> tri;
+  polygon::Problem pr = polygon::triangulate(xy, ro.data(), r1 - r0, po.data(), p1 - p0, tri, true);
+  if (!pr.ok()) return pr.status;
+  const i64 nt = (i64)tri.size() / 3, H = 3 * nt, nv = v1 - v0;
+  if (nt == 0) return OK;
+  // orient the triangles counter-clockwise, drop degenerate ones
+  std::vector<char> keep(nt);
+  decompose::orient_triangles(xy, tri.data(), nt, reinterpret_cast<bool*>(keep.data()));
+  std::vector<i64> ids;
+  ids.reserve(tri.size());
+  for (i64 t = 0; t < nt; ++t)
+    if (keep[t]) ids.insert(ids.end(), tri.begin() + 3 * t, tri.begin() + 3 * t + 3);
+  const i64 mt = (i64)ids.size() / 3, M = 3 * mt;
+  (void)H;
+  // twins: the half-edge (b, a) of each (a, b)
+  std::vector<std::pair<i64, i64>> key(M);
+  for (i64 h = 0; h < M; ++h) {
+    i64 a = ids[h], b = ids[3 * (h / 3) + (h % 3 + 1) % 3];
+    key[h] = {a * nv + b, h};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<i64> twin(M, -1);
+  for (i64 h = 0; h < M; ++h) {
+    i64 a = ids[h], b = ids[3 * (h / 3) + (h % 3 + 1) % 3];
+    auto it = std::lower_bound(key.begin(), key.end(), std::make_pair(b * nv + a, (i64)-1));
+    if (it != key.end() && it->first == b * nv + a) twin[h] = it->second;
+  }
+  std::vector<i64> outv(M > 0 ? M : 1), off(mt + 1);
+  i64 np = decompose::hertel_mehlhorn(xy, ids.data(), mt, twin.data(), true, outv.data(), off.data());
+  i64 base = (i64)pc_xy.size() / 2;
+  for (i64 k = 0; k < off[np]; ++k) {
+    pc_xy.push_back(xy[2 * outv[k]]);
+    pc_xy.push_back(xy[2 * outv[k] + 1]);
+  }
+  for (i64 p = 1; p <= np; ++p) pc_off.push_back(base + off[p]);
+  return OK;
+}
+
 // The method auto picks: the convolution when it has at most a few segments per input
 // vertex (every convex pair has exactly n + m; spiky shapes have up to n m / 4 and far
 // more crossings), else the pieces.
@@ -435,31 +490,42 @@ inline void sum_pair(const Table& T, i64 a, i64 b, int method, const Limits& L, 
       return;
     }
   }
-  // the pieces
-  const i64 qa0 = T.op_pc_off[a], qa1 = T.op_pc_off[a + 1];
-  const i64 qb0 = T.op_pc_off[b], qb1 = T.op_pc_off[b + 1];
+  // the pieces: the table's, or made here
+  const double* pc_xy = T.pc_xy;
+  i64 qa0 = T.op_pc_off[a], qa1 = T.op_pc_off[a + 1];
+  i64 qb0 = T.op_pc_off[b], qb1 = T.op_pc_off[b + 1];
+  std::vector<double> own_xy;
+  std::vector<i64> own_off{0};
   if (qa1 == qa0 || qb1 == qb0) {
-    out.clear();
-    out.status = RANGE;
-    return;
+    int ca = operand_pieces(T, a, own_xy, own_off);
+    qa0 = 0;
+    qa1 = (i64)own_off.size() - 1;
+    int cb = ca == OK ? operand_pieces(T, b, own_xy, own_off) : ca;
+    qb0 = qa1;
+    qb1 = (i64)own_off.size() - 1;
+    if (cb != OK) {
+      out.clear();
+      out.status = cb;
+      return;
+    }
+    pc_xy = own_xy.data();
   }
+  const i64* pc_off = own_xy.empty() ? T.pc_off : own_off.data();
   if ((qa1 - qa0) * (qb1 - qb0) > L.piece_pairs) {
     out.clear();
     out.status = RESOURCE;
     return;
   }
   // piece offsets relative to the table's piece coordinates
-  std::vector<i64> oa(T.pc_off + qa0, T.pc_off + qa1 + 1), ob(T.pc_off + qb0, T.pc_off + qb1 + 1);
-  std::vector<std::vector<EdgeIn>> parts;
-  int code = piece_sums(g, T.pc_xy, oa.data(), qa1 - qa0, T.pc_xy, ob.data(), qb1 - qb0, parts);
-  out.clear();
-  if (code != OK) {
-    out.status = code;
-    return;
-  }
-  Cascade c(g);
-  c.max_crossings = L.crossings;
-  c.unite(parts, out);
+  std::vector<i64> oa(pc_off + qa0, pc_off + qa1 + 1), ob(pc_off + qb0, pc_off + qb1 + 1);
+  // --- union.hpp: the piece sums made on demand, the ones inside the union so far dropped
+  // before noding, the rest united (this thread's reused buffers)
+  un::with_workspace([&](un::Workspace& w) {
+    w.u.max_crossings = L.crossings;
+    return un::sum_pieces_union(w.u, pc_xy, oa.data(), qa1 - qa0, pc_xy, ob.data(),
+                                qb1 - qb0, out);
+  });
+  // ---
   if (used) *used = PIECES;
 }
 

@@ -515,6 +515,8 @@ void bind_navmesh(nb::module_& m);    // navmesh.cpp
 void bind_overlay(nb::module_& m);    // overlay.cpp
 void bind_general(nb::module_& m);    // general.cpp
 void bind_polygon(nb::module_& m);    // polygon.cpp
+void bind_union(nb::module_& m);      // union.cpp
+void bind_offset(nb::module_& m);     // offset.cpp
 
 }  // namespace mk_bind
 
@@ -580,4 +582,6 @@ NB_MODULE(_ext, m) {
   bind_overlay(m);
   bind_general(m);
   bind_polygon(m);
+  bind_union(m);
+  bind_offset(m);
 }

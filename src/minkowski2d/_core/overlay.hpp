@@ -213,10 +213,48 @@ class Geo {
     }
     int s = fe_sign(axis == 0 ? A.x - B.x : A.y - B.y);
     if (s != UNSURE) return s;
+    {  // the homogeneous comparison in extended precision, certified
+      FEL Xa, Ya, Wa, Xb, Yb, Wb;
+      if (homog_l(a, Xa, Ya, Wa) && homog_l(b, Xb, Yb, Wb)) {
+        s = fe_sign(axis == 0 ? Xa * Wb - Xb * Wa : Ya * Wb - Yb * Wa);
+        if (s != UNSURE) return s;
+      }
+    }
     Dy Xa, Ya, Wa, Xb, Yb, Wb;
     exact(a, Xa, Ya, Wa);
     exact(b, Xb, Yb, Wb);
     return axis == 0 ? (Xa * Wb - Xb * Wa).sign() : (Ya * Wb - Yb * Wa).sign();
+  }
+
+  // extended-precision value of a DD with a certified bound
+  static FEL cfel(DD u) {
+    long double s = (long double)u.hi + (long double)u.lo;
+    return FEL{s, u.lo == 0 ? 0.0L : FEconst<long double>::U * std::fabs(s)};
+  }
+  // exact()'s homogeneous coordinates in extended precision (certified bounds); false
+  // when the sign of W is not certain
+  bool homog_l(i64 v, FEL& X, FEL& Y, FEL& W) const {
+    const Vert& V = verts[v];
+    if (V.p >= 0) {
+      X = cfel(pts[V.p].x);
+      Y = cfel(pts[V.p].y);
+      W = FEL{1.0L, 0.0L};
+      return true;
+    }
+    FEL N, D;
+    cross_nd<FEL>(V.l1, V.l2, N, D, &cfel);
+    int sd = fe_sign(D);
+    if (sd == UNSURE || sd == 0) return false;
+    if (sd < 0) {
+      N = -N;
+      D = -D;
+    }
+    const P &a = pts[lines[V.l1].a], &b = pts[lines[V.l1].b];
+    FEL ax = cfel(a.x), ay = cfel(a.y);
+    X = ax * D + (cfel(b.x) - ax) * N;
+    Y = ay * D + (cfel(b.y) - ay) * N;
+    W = D;
+    return true;
   }
   // the sweep order: x, then y
   int vcmp(i64 a, i64 b) const {
@@ -233,6 +271,14 @@ class Geo {
     FE ax = fe(a.x), ay = fe(a.y);
     int s = fe_sign(cross(fe(b.x) - ax, fe(b.y) - ay, V.x - ax, V.y - ay));
     if (s != UNSURE) return s;
+    {
+      FEL X, Y, W;
+      if (homog_l(v, X, Y, W)) {
+        FEL Ax = cfel(a.x), Ay = cfel(a.y);
+        s = fe_sign(cross(cfel(b.x) - Ax, cfel(b.y) - Ay, X - Ax * W, Y - Ay * W));
+        if (s != UNSURE) return s;
+      }
+    }
     Dy X, Y, W;
     exact(v, X, Y, W);
     Dy Ax = dy(a.x), Ay = dy(a.y);
@@ -354,9 +400,13 @@ inline bool rule_inside(int rule, int w0, int w1) {
 }
 
 // An input edge: along `line` from vertex v0 to vertex v1 (global vertex ids).
+// `group`: edges of one group >= 0 meet only at common end vertices (the edges of one
+// convex ring, or the boundary of one earlier result), so their pairs are not tested;
+// -1 (the default): no such promise.
 struct EdgeIn {
   i64 line, v0, v1;
   int w, layer;
+  int group = -1;
 };
 // A boundary edge of a result: inside on the left.
 struct BEdge {
@@ -369,10 +419,15 @@ struct Rings {
   std::vector<double> xy;
   std::vector<i64> ring_off{0}, poly_off{0};
   int status = OK;
+  // with want_lines: line[k] is the supporting line of the edge from vertex k to the next
+  // one of its ring (when collinear edges were merged, the line of the first)
+  bool want_lines = false;
+  std::vector<i64> line;
   void clear() {
     xy.clear();
     ring_off.assign(1, 0);
     poly_off.assign(1, 0);
+    line.clear();
     status = OK;
   }
 };
@@ -383,16 +438,48 @@ class Overlay {
 
   // counters (for tests and limits)
   i64 n_pairs = 0, n_crossings = 0, n_vertices = 0, n_edges = 0;
-  // work budget: a run that would node more crossings stops (exceeded() is then true
-  // and the result is empty); the caller reports RESOURCE
+  // work budget: a run that would node more crossings, or classify more candidate
+  // pairs (box-overlapping edge pairs), stops (exceeded() is then true and the result is
+  // empty); the caller reports RESOURCE
   i64 max_crossings = (i64)1 << 62;
+  i64 max_pairs = (i64)1 << 62;
   bool exceeded() const { return over_; }
+  // from this many edges on, candidate pairs come from a grid (boxes.hpp segment_pairs)
+  i64 grid_min = 512;
 
   // The boundary of the selected region as exact edges (global vertex ids).
   void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out) {
     arrange(in, rule);
     out.clear();
     for (const Piece& b : bnd_) out.push_back(BEdge{b.line, vg_[b.from], vg_[b.to]});
+  }
+  // The same, with some vertices already in sweep order: each list in `sorted` holds
+  // global vertex ids in the order of boundary_vertices() (one id per point, no id in
+  // two lists); the vertices of `in` that no list holds are sorted here. Lists are merged
+  // in linear time, so a cascade does not sort the same vertices at every level.
+  void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out,
+           const std::vector<const std::vector<i64>*>& sorted) {
+    lists_ = &sorted;
+    run(in, rule, out);
+    lists_ = nullptr;
+  }
+  void run(const std::vector<EdgeIn>& in, int rule, Rings& out,
+           const std::vector<const std::vector<i64>*>& sorted) {
+    lists_ = &sorted;
+    run(in, rule, out);
+    lists_ = nullptr;
+  }
+  // After a run: its boundary's vertices (global ids, one per point) in sweep order.
+  void boundary_vertices(std::vector<i64>& out) const {
+    out.clear();
+    if (bnd_.empty()) return;
+    const i64 nv = (i64)av_.size();
+    std::vector<char> used(nv, 0);
+    for (const Piece& b : bnd_) used[b.from] = used[b.to] = 1;
+    for (i64 t = 0; t < nv; ++t) {
+      i64 v = sw_by_rank_[t];
+      if (used[v]) out.push_back(av_[v]);
+    }
   }
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
@@ -609,6 +696,7 @@ class Overlay {
     i64 from, to;   // boundary direction (local ids)
     int n0;         // layer-0 weight of the edges with their inside below (for
                     // degenerate(): the rings covering the piece's own points)
+    i64 src = -1;   // the input edge it comes from (its line's cached points: ll_)
   };
   std::vector<Piece> pcs_, bnd_;
   int rule_ = UNION;
@@ -632,6 +720,8 @@ class Overlay {
       uf_[a] = b;
   }
 
+  const std::vector<const std::vector<i64>*>* lists_ = nullptr;
+
   void arrange(const std::vector<EdgeIn>& in, int rule) {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
@@ -654,55 +744,194 @@ class Overlay {
 
   // step 1: input vertices sorted and merged; edges in local ids
   std::vector<i64> tmp_;
-  void local_vertices(const std::vector<EdgeIn>& in) {
-    tmp_.clear();
-    for (const EdgeIn& e : in) {
-      tmp_.push_back(e.v0);
-      tmp_.push_back(e.v1);
+  // sort keys: the vertex's approximation (exact for a plain point: e == 0)
+  struct VKey {
+    double x, ex, y, ey;
+    i64 g;
+  };
+  std::vector<VKey> vk_;
+  VKey vkey(i64 g) const {
+    const Vert& V = g_.verts[g];
+    return VKey{V.x.v, V.x.e, V.y.v, V.y.e, g};
+  }
+  // the sweep order (x, then y) of two vertices: by the approximations when they are
+  // exact or certain, else exactly
+  int vkcmp(const VKey& a, const VKey& b) const {
+    if (a.g == b.g) return 0;
+    if (a.ex == 0 && b.ex == 0 && a.ey == 0 && b.ey == 0) {
+      if (a.x != b.x) return a.x < b.x ? -1 : 1;
+      if (a.y != b.y) return a.y < b.y ? -1 : 1;
+      return 0;
     }
-    std::sort(tmp_.begin(), tmp_.end());
-    tmp_.erase(std::unique(tmp_.begin(), tmp_.end()), tmp_.end());
-    std::sort(tmp_.begin(), tmp_.end(), [&](i64 a, i64 b) { return g_.vcmp(a, b) < 0; });
-    vg_.clear();
-    // global id -> local id: by binary search over a sorted copy
-    std::vector<std::pair<i64, i64>> map;
-    map.reserve(tmp_.size());
-    for (std::size_t t = 0; t < tmp_.size(); ++t) {
-      if (t == 0 || g_.vcmp(tmp_[t - 1], tmp_[t]) != 0) vg_.push_back(tmp_[t]);
-      map.emplace_back(tmp_[t], (i64)vg_.size() - 1);
+    int s = fe_sign(FE{a.x, a.ex} - FE{b.x, b.ex});
+    if (s == UNSURE) {
+      if (same_vertex(a.g, b.g)) return 0;
+      s = g_.coord_cmp(a.g, b.g, 0);
     }
-    std::sort(map.begin(), map.end());
-    auto local = [&](i64 v) {
-      return std::lower_bound(map.begin(), map.end(), std::make_pair(v, (i64)-1))->second;
-    };
-    ed_.clear();
-    for (const EdgeIn& e : in) {
-      i64 a = local(e.v0), b = local(e.v1);
-      if (a != b && e.w != 0) ed_.push_back(EdgeIn{e.line, a, b, e.w, e.layer});
+    if (s != 0) return s;
+    s = fe_sign(FE{a.y, a.ey} - FE{b.y, b.ey});
+    if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 1);
+    return s;
+  }
+  // certainly the same point without arithmetic: the same id, or crossings of the same
+  // two lines (false: not known)
+  bool same_vertex(i64 a, i64 b) const {
+    if (a == b) return true;
+    const Vert &A = g_.verts[a], &B = g_.verts[b];
+    if (A.p >= 0 || B.p >= 0) return false;
+    return (A.l1 == B.l1 && A.l2 == B.l2) || (A.l1 == B.l2 && A.l2 == B.l1);
+  }
+  // along(line, a, b) with that shortcut
+  int along_s(i64 line, i64 a, i64 b) const {
+    if (same_vertex(a, b)) return 0;
+    return g_.along(line, a, b);
+  }
+  // global id -> local id of this run (valid when its stamp is the run's)
+  struct G2L {
+    std::uint32_t stamp;
+    i64 local;
+  };
+  std::vector<G2L> g2l_;
+  std::uint32_t run_stamp_ = 0;
+
+  std::vector<VKey> vk2_, vk3_;
+  // merges the sorted sequence b into a (sorted): the result in a
+  void merge_keys(std::vector<VKey>& a, const std::vector<VKey>& b) {
+    if (b.empty()) return;
+    if (a.empty()) {
+      a = b;
+      return;
     }
+    vk3_.resize(a.size() + b.size());
+    std::merge(a.begin(), a.end(), b.begin(), b.end(), vk3_.begin(),
+               [&](const VKey& x, const VKey& y) { return vkcmp(x, y) < 0; });
+    a.swap(vk3_);
   }
 
+  void local_vertices(const std::vector<EdgeIn>& in) {
+    if (g2l_.size() < g_.verts.size()) g2l_.resize(g_.verts.size() + g_.verts.size() / 2, G2L{0, 0});
+    if (++run_stamp_ == 0) {
+      for (G2L& q : g2l_) q.stamp = 0;
+      run_stamp_ = 1;
+    }
+    // the presorted lists, merged
+    vk_.clear();
+    if (lists_)
+      for (const std::vector<i64>* L : *lists_) {
+        vk2_.clear();
+        for (i64 v : *L)
+          if (g2l_[v].stamp != run_stamp_) {
+            g2l_[v].stamp = run_stamp_;
+            vk2_.push_back(vkey(v));
+          }
+        merge_keys(vk_, vk2_);
+      }
+    // the others, sorted
+    vk2_.clear();
+    for (const EdgeIn& e : in)
+      for (i64 v : {e.v0, e.v1})
+        if (g2l_[v].stamp != run_stamp_) {
+          g2l_[v].stamp = run_stamp_;
+          vk2_.push_back(vkey(v));
+        }
+    std::sort(vk2_.begin(), vk2_.end(),
+              [&](const VKey& a, const VKey& b) { return vkcmp(a, b) < 0; });
+    merge_keys(vk_, vk2_);
+    vg_.clear();
+    for (std::size_t t = 0; t < vk_.size(); ++t) {
+      if (t == 0 || vkcmp(vk_[t - 1], vk_[t]) != 0) vg_.push_back(vk_[t].g);
+      g2l_[vk_[t].g].local = (i64)vg_.size() - 1;
+    }
+    ed_.clear();
+    ngroups_ = 0;
+    for (const EdgeIn& e : in) {
+      i64 a = g2l_[e.v0].local, b = g2l_[e.v1].local;
+      if (a != b && e.w != 0) {
+        ed_.push_back(EdgeIn{e.line, a, b, e.w, e.layer, e.group});
+        if (e.group >= ngroups_) ngroups_ = e.group + 1;
+      }
+    }
+    // approximations of the input vertices and of the edges' lines, cached
+    lv_.resize(vg_.size());
+    for (std::size_t t = 0; t < vg_.size(); ++t) lv_[t] = lvert(vg_[t]);
+    ll_.resize(ed_.size());
+    for (std::size_t i = 0; i < ed_.size(); ++i) {
+      const Line& L = g_.lines[ed_[i].line];
+      const P &a = g_.pts[L.a], &b = g_.pts[L.b];
+      ll_[i] = LLine{fe(a.x), fe(a.y), fe(b.x), fe(b.y), plain(a) && plain(b)};
+    }
+  }
+  int ngroups_ = 0;
+
   // step 2
+  std::vector<double> bx0_, bx1_, by0_, by1_;
+  std::vector<int> grp_;
+  BoxScratch boxes_;
+  std::vector<double> sx0_, sy0_, sx1_, sy1_, stol_;
+  GridScratch grid_;
   void intersect() {
     const i64 n = (i64)ed_.size();
     splits_.clear();
     newv_.clear();
-    std::vector<double> x0(n), x1(n), y0(n), y1(n);
+    bx0_.resize(n);
+    bx1_.resize(n);
+    by0_.resize(n);
+    by1_.resize(n);
+    grp_.resize(n);
     const double up = 1 + 0x1p-50;
     for (i64 i = 0; i < n; ++i) {
       const Vert &a = g_.verts[vg_[ed_[i].v0]], &b = g_.verts[vg_[ed_[i].v1]];
+      grp_[i] = ed_[i].group;
+      if (a.x.e == 0 && a.y.e == 0 && b.x.e == 0 && b.y.e == 0) {
+        // exact coordinates: the box itself
+        bx0_[i] = std::min(a.x.v, b.x.v);
+        bx1_[i] = std::max(a.x.v, b.x.v);
+        by0_[i] = std::min(a.y.v, b.y.v);
+        by1_[i] = std::max(a.y.v, b.y.v);
+        continue;
+      }
       // boxes hold the exact vertices: widen by the bounds (rounded outwards)
       double ax0 = a.x.v - a.x.e * up, ax1 = a.x.v + a.x.e * up;
       double bx0 = b.x.v - b.x.e * up, bx1 = b.x.v + b.x.e * up;
       double ay0 = a.y.v - a.y.e * up, ay1 = a.y.v + a.y.e * up;
       double by0 = b.y.v - b.y.e * up, by1 = b.y.v + b.y.e * up;
-      x0[i] = std::nextafter(std::min(ax0, bx0), -INFINITY);
-      x1[i] = std::nextafter(std::max(ax1, bx1), INFINITY);
-      y0[i] = std::nextafter(std::min(ay0, by0), -INFINITY);
-      y1[i] = std::nextafter(std::max(ay1, by1), INFINITY);
+      bx0_[i] = next_down(std::min(ax0, bx0));
+      bx1_[i] = next_up(std::max(ax1, bx1));
+      by0_[i] = next_down(std::min(ay0, by0));
+      by1_[i] = next_up(std::max(ay1, by1));
     }
-    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(),
-              [&](i64 i, i64 j) { classify(i, j); });
+    auto on_pair = [&](i64 i, i64 j) {
+      if (n_pairs >= max_pairs) over_ = true;
+      if (over_) return false;
+      classify(i, j);
+      return true;
+    };
+    if (n >= grid_min) {
+      // many edges: candidates from a grid over the segments themselves
+      sx0_.resize(n);
+      sy0_.resize(n);
+      sx1_.resize(n);
+      sy1_.resize(n);
+      stol_.resize(n);
+      for (i64 i = 0; i < n; ++i) {
+        const Vert &a = g_.verts[vg_[ed_[i].v0]], &b = g_.verts[vg_[ed_[i].v1]];
+        sx0_[i] = a.x.v;
+        sy0_[i] = a.y.v;
+        sx1_[i] = b.x.v;
+        sy1_[i] = b.y.v;
+        stol_[i] = std::max(std::max(a.x.e, a.y.e), std::max(b.x.e, b.y.e)) * (1 + 0x1p-40);
+      }
+      if (segment_pairs(n, sx0_.data(), sy0_.data(), sx1_.data(), sy1_.data(), stol_.data(),
+                        bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), grid_,
+                        on_pair))
+        return;
+    }
+    if (n < 256)
+      box_pairs_scan(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), boxes_,
+                     on_pair);
+    else
+      box_pairs_grouped(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
+                        ngroups_, boxes_, on_pair);
   }
 
   // vertex p strictly between the ends of edge i (p on its line)
@@ -718,10 +947,10 @@ class Overlay {
     ++n_pairs;
     const EdgeIn &s = ed_[i], &t = ed_[j];
     const i64 p = s.v0, q = s.v1, r = t.v0, u = t.v1;
-    auto sd = [&](i64 line, i64 v, i64 e0, i64 e1) {
-      return (v == e0 || v == e1) ? 0 : g_.side(line, vg_[v]);
+    auto sd = [&](i64 e, i64 v, i64 e0, i64 e1) {
+      return (v == e0 || v == e1) ? 0 : side_ev(e, v);
     };
-    int oa = sd(s.line, r, p, q), ob = sd(s.line, u, p, q);
+    int oa = sd(i, r, p, q), ob = sd(i, u, p, q);
     if (oa * ob > 0) return;
     if (oa == 0 && ob == 0) {
       // collinear: each endpoint strictly inside the other edge splits it
@@ -731,7 +960,7 @@ class Overlay {
       if (q != r && q != u && inside_edge(j, q)) splits_.push_back(Split{j, q});
       return;
     }
-    int oc = sd(t.line, p, r, u), od = sd(t.line, q, r, u);
+    int oc = sd(j, p, r, u), od = sd(j, q, r, u);
     if (oc * od > 0) return;
     if (oa == 0 || ob == 0 || oc == 0 || od == 0) {
       // one common point, an endpoint of one of them
@@ -758,23 +987,30 @@ class Overlay {
   }
 
   // step 3: splits sorted along their edges, equal ones united
+  std::vector<std::int8_t> edir_;
   void split() {
     const i64 nv0 = (i64)vg_.size();
     uf_.resize(nv0 + newv_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
+    // each split edge's direction against its line (+1: v0 -> v1 runs along it)
+    edir_.resize(ed_.size());
+    for (std::size_t k = 0; k < splits_.size(); ++k)
+      if (k == 0 || splits_[k].edge != splits_[k - 1].edge) {
+        const EdgeIn& e = ed_[splits_[k].edge];
+        edir_[splits_[k].edge] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
+      }
     std::sort(splits_.begin(), splits_.end(), [&](const Split& a, const Split& b) {
       if (a.edge != b.edge) return a.edge < b.edge;
       if (a.node == b.node) return false;
       const EdgeIn& e = ed_[a.edge];
       // along the edge's own direction (v0 -> v1)
-      int s = g_.along(e.line, gid(a.node), gid(b.node));
-      int d = g_.along(e.line, vg_[e.v1], vg_[e.v0]);
-      return s * d < 0;
+      int s = along_s(e.line, gid(a.node), gid(b.node));
+      return s * edir_[a.edge] < 0;
     });
     for (std::size_t k = 1; k < splits_.size(); ++k) {
       const Split &a = splits_[k - 1], &b = splits_[k];
       if (a.edge == b.edge && a.node != b.node &&
-          g_.along(ed_[a.edge].line, gid(a.node), gid(b.node)) == 0)
+          along_s(ed_[a.edge].line, gid(a.node), gid(b.node)) == 0)
         unite(a.node, b.node);
     }
     // representatives: roots; a new vertex united with an input one maps to it
@@ -784,7 +1020,7 @@ class Overlay {
   std::vector<i64> lid_;  // node -> arrangement vertex (local), after union
   std::vector<i64> av_;   // arrangement vertex -> global vertex id
   void order() {
-    const i64 nn = (i64)uf_.size();
+    const i64 nn = (i64)uf_.size(), nv0 = (i64)vg_.size();
     lid_.assign(nn, -1);
     av_.clear();
     for (i64 node = 0; node < nn; ++node) {
@@ -797,18 +1033,43 @@ class Overlay {
     }
     const i64 m = (i64)av_.size();
     n_vertices = m;
-    tmp_.resize(m);
-    std::iota(tmp_.begin(), tmp_.end(), 0);
-    std::sort(tmp_.begin(), tmp_.end(),
-              [&](i64 a, i64 b) { return g_.vcmp(av_[a], av_[b]) < 0; });
+    lv_.resize(m);
+    for (i64 t = nv0; t < m; ++t) lv_[t] = lvert(av_[t]);
+    // the input vertices are roots, in sweep order (local_vertices); sort the new ones
+    // and merge
+    vk_.clear();
+    for (i64 t = nv0; t < m; ++t) vk_.push_back(vkey(av_[t]));
+    std::vector<i64>& tail = tmp_;
+    tail.resize(m - nv0);
+    std::iota(tail.begin(), tail.end(), nv0);
+    std::sort(tail.begin(), tail.end(),
+              [&](i64 a, i64 b) { return vkcmp(vk_[a - nv0], vk_[b - nv0]) < 0; });
     rank_.resize(m);
-    for (i64 t = 0; t < m; ++t) rank_[tmp_[t]] = t;
+    i64 i = 0, j = 0, t = 0;
+    VKey hk{};
+    bool have = false;
+    while (i < nv0 || j < m - nv0) {
+      if (i < nv0 && !have) {
+        hk = vkey(av_[i]);
+        have = true;
+      }
+      bool take_head =
+          j >= m - nv0 || (i < nv0 && vkcmp(hk, vk_[tail[j] - nv0]) < 0);
+      if (take_head) {
+        rank_[i++] = t++;
+        have = false;
+      } else {
+        rank_[tail[j++]] = t++;
+      }
+    }
   }
 
   // step 4: pieces
+  std::vector<Piece> raw_;
+  std::vector<std::pair<u64, std::uint32_t>> pkey_;
   void pieces() {
-    std::vector<Piece> raw;
-    raw.reserve(ed_.size() + splits_.size());
+    std::vector<Piece>& raw = raw_;
+    raw.clear();
     std::size_t k = 0;
     for (i64 i = 0; i < (i64)ed_.size(); ++i) {
       const EdgeIn& e = ed_[i];
@@ -822,6 +1083,7 @@ class Overlay {
         pc.l = fwd ? prev : nxt;
         pc.r = fwd ? nxt : prev;
         pc.line = e.line;
+        pc.src = i;
         // the line runs from l's side to r's side when the edge does (fwd) and the line
         // runs along the edge (es > 0), or neither
         pc.s = (fwd == (es > 0)) ? 1 : -1;
@@ -838,18 +1100,21 @@ class Overlay {
       }
       emit(lid_[e.v1]);
     }
-    std::sort(raw.begin(), raw.end(), [](const Piece& a, const Piece& b) {
-      return a.l != b.l ? a.l < b.l : a.r < b.r;
-    });
+    // sorted by (l, r) through small keys; pieces joining the same two vertices merged
+    pkey_.resize(raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i)
+      pkey_[i] = {((u64)raw[i].l << 32) | (u64)raw[i].r, (std::uint32_t)i};
+    std::sort(pkey_.begin(), pkey_.end());
     pcs_.clear();
-    for (std::size_t i = 0; i < raw.size();) {
+    for (std::size_t i = 0; i < pkey_.size();) {
       std::size_t j = i;
-      Piece pc = raw[i];
+      Piece pc = raw[pkey_[i].second];
       pc.c0 = pc.c1 = pc.n0 = 0;
-      for (; j < raw.size() && raw[j].l == raw[i].l && raw[j].r == raw[i].r; ++j) {
-        pc.c0 += raw[j].c0;
-        pc.c1 += raw[j].c1;
-        if (raw[j].c0 < 0) pc.n0 -= raw[j].c0;
+      for (; j < pkey_.size() && pkey_[j].first == pkey_[i].first; ++j) {
+        const Piece& q = raw[pkey_[j].second];
+        pc.c0 += q.c0;
+        pc.c1 += q.c1;
+        if (q.c0 < 0) pc.n0 -= q.c0;
       }
       // keep_zero_: a piece where rings meet from both sides stays (degenerate())
       if (pc.c0 != 0 || pc.c1 != 0 || (keep_zero_ && j > i + 1)) pcs_.push_back(pc);
@@ -859,38 +1124,63 @@ class Overlay {
   }
 
   // side of arrangement vertex v against the line of piece e (oriented l -> r)
-  int side(const Piece& e, i64 v) const { return g_.side(e.line, av_[v]) * e.s; }
+  int side(const Piece& e, i64 v) const {
+    return (e.src >= 0 ? side_ev(e.src, v) : g_.side(e.line, av_[v])) * e.s;
+  }
+  // Side of local vertex v (an input vertex, or an arrangement vertex once order() has
+  // run: input vertices keep their ids) against the line of input edge i: from the
+  // cached plain coordinates when both are plain (one orientation of doubles), else
+  // Geo::side.
+  struct LLine {
+    FE ax, ay, bx, by;  // the line's two points (exact when e == 0)
+    bool plain;
+  };
+  struct LVert {
+    FE x, y;  // exact when plain (a point of two doubles)
+    bool plain;
+  };
+  std::vector<LLine> ll_;
+  std::vector<LVert> lv_;
+  int side_ev(i64 i, i64 v) const {
+    const LLine& L = ll_[i];
+    const LVert& V = lv_[v];
+    if (L.plain && V.plain)
+      return cross_sign(L.ax.v, L.ay.v, L.bx.v, L.by.v, L.ax.v, L.ay.v, V.x.v, V.y.v);
+    int s = fe_sign(cross(L.bx - L.ax, L.by - L.ay, V.x - L.ax, V.y - L.ay));
+    if (s != UNSURE) return s;
+    return g_.side(ed_[i].line, v < (i64)vg_.size() ? vg_[v] : av_[v]);
+  }
+  LVert lvert(i64 gv) const {
+    const Vert& V = g_.verts[gv];
+    return LVert{V.x, V.y, V.p >= 0 && V.x.e == 0 && V.y.e == 0};
+  }
   // pieces from one vertex: e1 below e2 when the turn from e1 to e2 is left
   bool slope_below(const Piece& e1, const Piece& e2) const {
+    if (e1.src >= 0 && e2.src >= 0 && ll_[e1.src].plain && ll_[e2.src].plain) {
+      const LLine &a = ll_[e1.src], &b = ll_[e2.src];
+      return cross_sign(a.ax.v, a.ay.v, a.bx.v, a.by.v, b.ax.v, b.ay.v, b.bx.v, b.by.v) * e1.s *
+                 e2.s > 0;
+    }
     return g_.turn(e1.line, e1.s, e2.line, e2.s) > 0;
   }
 
-  struct StatusLess {
-    const Overlay* o;
-    const std::vector<Piece>* ps;
-    bool operator()(i64 i, i64 j) const {
-      if (i == j) return false;
-      const Piece &e1 = (*ps)[i], &e2 = (*ps)[j];
-      if (e1.l == e2.l) return o->slope_below(e1, e2);
-      if (o->rank_[e1.l] > o->rank_[e2.l]) {
-        int s = o->side(e2, e1.l);
-        if (s == 0) return o->slope_below(e1, e2);
-        return s < 0;
-      }
-      int s = o->side(e1, e2.l);
-      if (s == 0) return o->slope_below(e1, e2);
-      return s > 0;
-    }
-  };
-
   // Sweeps the pieces ps (which do not cross); after inserting the pieces that start at
   // a vertex calls at_vertex(new pieces bottom to top, predecessor of the lowest or -1).
+  // The status is a vector sorted bottom to top: at vertex v the pieces below v are a
+  // prefix (v is strictly left of each, looking along it), then come the pieces that end
+  // at v (no piece passes through a vertex: the pieces are noded); those are replaced
+  // by the pieces that start at v, in slope order.
+  std::vector<i64> sw_by_rank_, sw_lo_l_, sw_lo_r_, sw_at_l_, sw_at_r_, sw_fill_, sw_status_,
+      sw_fresh_;
   template <class F>
   void sweep(const std::vector<Piece>& ps, F&& at_vertex) {
     const i64 nv = (i64)av_.size(), np = (i64)ps.size();
-    std::vector<i64> by_rank(nv);
+    std::vector<i64>&by_rank = sw_by_rank_, &lo_l = sw_lo_l_, &lo_r = sw_lo_r_,
+    &at_l = sw_at_l_, &at_r = sw_at_r_, &status = sw_status_, &fresh = sw_fresh_;
+    by_rank.resize(nv);
     for (i64 v = 0; v < nv; ++v) by_rank[rank_[v]] = v;
-    std::vector<i64> lo_l(nv + 1, 0), lo_r(nv + 1, 0);
+    lo_l.assign(nv + 1, 0);
+    lo_r.assign(nv + 1, 0);
     for (const Piece& e : ps) {
       ++lo_l[e.l + 1];
       ++lo_r[e.r + 1];
@@ -899,29 +1189,47 @@ class Overlay {
       lo_l[v + 1] += lo_l[v];
       lo_r[v + 1] += lo_r[v];
     }
-    std::vector<i64> at_l(np), at_r(np);
-    {
-      std::vector<i64> fl(lo_l.begin(), lo_l.end() - 1), fr(lo_r.begin(), lo_r.end() - 1);
-      for (i64 e = 0; e < np; ++e) {
-        at_l[fl[ps[e].l]++] = e;
-        at_r[fr[ps[e].r]++] = e;
-      }
-    }
-    using Status = std::set<i64, StatusLess>;
-    Status status(StatusLess{this, &ps});
-    std::vector<typename Status::iterator> where(np);
-    std::vector<i64> fresh;
+    at_l.resize(np);
+    at_r.resize(np);
+    sw_fill_.assign(lo_l.begin(), lo_l.end() - 1);
+    for (i64 e = 0; e < np; ++e) at_l[sw_fill_[ps[e].l]++] = e;
+    sw_fill_.assign(lo_r.begin(), lo_r.end() - 1);
+    for (i64 e = 0; e < np; ++e) at_r[sw_fill_[ps[e].r]++] = e;
+    status.clear();
     for (i64 t = 0; t < nv; ++t) {
       i64 v = by_rank[t];
-      for (i64 k = lo_r[v]; k < lo_r[v + 1]; ++k) status.erase(where[at_r[k]]);
-      if (lo_l[v] == lo_l[v + 1]) continue;
+      const i64 nend = lo_r[v + 1] - lo_r[v], nstart = lo_l[v + 1] - lo_l[v];
+      if (nend == 0 && nstart == 0) continue;
+      // the first piece not below v
+      std::size_t lo = 0, hi = status.size();
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        const Piece& e = ps[status[mid]];
+        if (e.r != v && side(e, v) > 0)  // v is on the pieces that end at v
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      const std::size_t pos = lo;
+#ifdef MK_OVERLAY_CHECK
+      for (i64 k = 0; k < nend; ++k)
+        if (pos + k >= status.size() || ps[status[pos + k]].r != v) std::abort();
+#endif
       fresh.assign(at_l.begin() + lo_l[v], at_l.begin() + lo_l[v + 1]);
-      std::sort(fresh.begin(), fresh.end(),
-                [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
-      for (i64 e : fresh) where[e] = status.insert(e).first;
-      auto it = where[fresh[0]];
-      i64 pred = it == status.begin() ? -1 : *std::prev(it);
-      at_vertex(fresh, pred);
+      if (fresh.size() > 1)
+        std::sort(fresh.begin(), fresh.end(),
+                  [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
+      // replace the nend pieces at pos (they end at v) by the fresh ones
+      const i64 diff = nstart - nend;
+      if (diff > 0) {
+        status.insert(status.begin() + pos, (std::size_t)diff, -1);
+      } else if (diff < 0) {
+        status.erase(status.begin() + pos, status.begin() + pos + (std::size_t)(-diff));
+      }
+      for (i64 k = 0; k < nstart; ++k) status[pos + k] = fresh[k];
+
+      if (nstart == 0) continue;
+      at_vertex(fresh, pos == 0 ? (i64)-1 : status[pos - 1]);
     }
   }
 
@@ -971,6 +1279,7 @@ class Overlay {
   // ---- rings
   std::vector<std::vector<i64>> rings_;       // arrangement vertices, inside on the left
   std::vector<std::vector<i64>> ring_edges_;  // boundary pieces of each ring
+  std::vector<std::vector<i64>> ring_lines_;  // line of the edge leaving each kept vertex
   std::vector<char> ring_ccw_;
   std::vector<char> junction_;  // arrangement vertex where several boundary rings meet
 
@@ -978,6 +1287,7 @@ class Overlay {
     out.clear();
     rings_.clear();
     ring_edges_.clear();
+    ring_lines_.clear();
     ring_ccw_.clear();
     const i64 nv = (i64)av_.size(), nb = (i64)bnd_.size();
     std::vector<i64> lo(nv + 1, 0);
@@ -1048,7 +1358,7 @@ class Overlay {
   // a simple loop: drop collinear vertices, record its orientation
   void add_ring(const std::vector<i64>& rv, const std::vector<i64>& re) {
     const i64 n = (i64)rv.size();
-    std::vector<i64> kv;
+    std::vector<i64> kv, kl;
     kv.reserve(n);
     i64 lowest = -1, lowest_i = 0;
     for (i64 i = 0; i < n; ++i) {
@@ -1062,11 +1372,13 @@ class Overlay {
         lowest_i = i;
       }
       kv.push_back(rv[i]);
+      kl.push_back(bnd_[re[i]].line);
     }
     if (kv.size() < 3) return;  // cannot happen for a boundary with area
     // the turn at the lowest vertex is strict and its sign is the orientation
     int t = bturn(bnd_[re[(lowest_i + n - 1) % n]], bnd_[re[lowest_i]]);
     rings_.push_back(std::move(kv));
+    ring_lines_.push_back(std::move(kl));
     ring_edges_.push_back(re);
     ring_ccw_.push_back(t > 0);
   }
@@ -1150,6 +1462,7 @@ class Overlay {
         xy(r[(start[k] + i) % m], x, y);
         out.xy.push_back(x);
         out.xy.push_back(y);
+        if (out.want_lines) out.line.push_back(ring_lines_[k][(start[k] + i) % m]);
       }
       out.ring_off.push_back((i64)out.xy.size() / 2);
     };
@@ -1174,18 +1487,24 @@ class Overlay {
 inline void clean_rounded(Rings& r) {
   Rings out;
   out.status = r.status;
+  // the supporting lines follow their vertices (a dropped repeat's zero-length edge goes)
+  const bool lines = r.want_lines && r.line.size() * 2 == r.xy.size();
+  out.want_lines = r.want_lines;
   std::vector<double> x, y;
+  std::vector<i64> ln;
   for (std::size_t p = 0; p + 1 < r.poly_off.size(); ++p) {
     bool ext_kept = false;
     for (i64 k = r.poly_off[p]; k < r.poly_off[p + 1]; ++k) {
       x.clear();
       y.clear();
+      ln.clear();
       const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1], m = r1 - r0;
       for (i64 i = r0; i < r1; ++i) {
         i64 j = i + 1 < r1 ? i + 1 : r0;
         if (m > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) continue;
         x.push_back(r.xy[2 * i]);
         y.push_back(r.xy[2 * i + 1]);
+        if (lines) ln.push_back(r.line[i]);
       }
       if (x.size() < 3) continue;
       // start again at the smallest vertex (x, then y)
@@ -1194,6 +1513,7 @@ inline void clean_rounded(Rings& r) {
         if (x[i] < x[s0] || (x[i] == x[s0] && y[i] < y[s0])) s0 = i;
       std::rotate(x.begin(), x.begin() + s0, x.end());
       std::rotate(y.begin(), y.begin() + s0, y.end());
+      if (lines) std::rotate(ln.begin(), ln.begin() + s0, ln.end());
       bool is_ext = k == r.poly_off[p];
       if (is_ext)
         ext_kept = true;
@@ -1202,6 +1522,7 @@ inline void clean_rounded(Rings& r) {
       for (std::size_t i = 0; i < x.size(); ++i) {
         out.xy.push_back(x[i]);
         out.xy.push_back(y[i]);
+        if (lines) out.line.push_back(ln[i]);
       }
       out.ring_off.push_back((i64)out.xy.size() / 2);
     }

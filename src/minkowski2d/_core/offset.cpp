@@ -1,0 +1,150 @@
+// offset.cpp -- the binding of offset.hpp into minkowski2d._core._ext: offset_rings, one
+// call for one polygonal set or a batch of them (threads over the batch, GIL released).
+#include <nanobind/nanobind.h>
+#include <nanobind/ndarray.h>
+#include <nanobind/stl/tuple.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+#include "bind.hpp"
+#include "exact.hpp"
+#include "offset.hpp"
+
+namespace nb = nanobind;
+using namespace nb::literals;
+using mk::i64;
+
+namespace mk_bind {
+namespace {
+
+// offset_rings(xy (N, 2), ring_off (R + 1,), ring_hole (R,), geom_off (G + 1,), unite (G,),
+//              delta (G,), distance, tolerance (NaN: default), default_rel, outer, join,
+//              miter_limit, labels=False, threads=1)
+//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), info (G, 4):
+//       status, code, least tolerance, tolerance used; extra)
+// Geometry g is made of the rings ring_off[geom_off[g]] ..; its result is the polygons
+// poly_off[geom_off[g]] .. of the output. With labels (one geometry only), extra is
+// (label per output row, the rings offset (scaled, offset side right) as xy and offsets,
+// e0): the output is then scaled by 2^-e0.
+nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In1<i64> UN,
+                       In1<double> DL, double distance, double tolerance, double default_rel,
+                       bool outer, int join, double limit, bool labels, int threads) {
+  const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, ng = (i64)GO.shape(0) - 1;
+  if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
+  const i64 *ro = RO.data(), *go = GO.data(), *rh = RH.data(), *un = UN.data();
+  const double* dl = DL.data();
+  if (nr < 0 || ng < 0 || ro[0] != 0 || ro[nr] != n || go[0] != 0 || go[ng] != nr ||
+      (i64)RH.shape(0) != nr || (i64)UN.shape(0) != ng || (i64)DL.shape(0) != ng)
+    throw nb::value_error("offset: bad offsets");
+  for (i64 r = 0; r < nr; ++r)
+    if (ro[r + 1] < ro[r]) throw nb::value_error("offset: bad ring offsets");
+  for (i64 k = 0; k < ng; ++k)
+    if (go[k + 1] < go[k]) throw nb::value_error("offset: bad geometry offsets");
+  const double* xy = XY.data();
+  for (i64 q = 0; q < 2 * n; ++q)
+    if (!(xy[q] - xy[q] == 0)) throw nb::value_error("offset: non-finite coordinate");
+  if (labels && ng != 1) throw nb::value_error("offset: labels for one geometry only");
+  mk::off::Params p;
+  p.distance = distance;
+  p.tolerance = tolerance;
+  p.default_rel = default_rel;
+  p.outer = outer;
+  p.join = join;
+  p.limit = limit;
+  std::vector<mk::off::Result> res((std::size_t)ng);
+  {
+    nb::gil_scoped_release nogil;
+    auto work = [&](i64 g0, i64 g1) {
+      mk::off::Offsetter off;
+      std::vector<mk::ms::Ring> rings;
+      for (i64 g = g0; g < g1; ++g) {
+        rings.clear();
+        for (i64 r = go[g]; r < go[g + 1]; ++r)
+          rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], rh[r] != 0));
+        off.run(rings, un[g] != 0, dl[g], p, labels, res[(std::size_t)g]);
+      }
+    };
+    int nt = (int)std::max<i64>(1, std::min<i64>(threads, ng));
+    if (nt <= 1) {
+      work(0, ng);
+    } else {
+      std::vector<std::thread> pool;
+      for (int t = 0; t < nt; ++t) pool.emplace_back(work, ng * t / nt, ng * (t + 1) / nt);
+      for (auto& th : pool) th.join();
+    }
+  }
+  // concatenate, closing every ring
+  i64 rows = 0, nrings = 0, npolys = 0;
+  for (auto& r : res) {
+    rows += (i64)r.rings.xy.size() / 2 + (i64)r.rings.ring_off.size() - 1;
+    nrings += (i64)r.rings.ring_off.size() - 1;
+    npolys += (i64)r.rings.poly_off.size() - 1;
+  }
+  double* oxy = alloc<double>(2 * rows);
+  i64* oro = alloc<i64>(nrings + 1);
+  i64* opo = alloc<i64>(npolys + 1);
+  i64* ogo = alloc<i64>(ng + 1);
+  double* oin = alloc<double>(4 * ng);  // status, code, least, eps
+  std::vector<i64> lab;
+  i64 row = 0, ring = 0, poly = 0;
+  oro[0] = 0;
+  opo[0] = 0;
+  ogo[0] = 0;
+  for (i64 g = 0; g < ng; ++g) {
+    const mk::off::Result& r = res[(std::size_t)g];
+    oin[4 * g] = r.status;
+    oin[4 * g + 1] = r.code;
+    oin[4 * g + 2] = r.least;
+    oin[4 * g + 3] = r.eps;
+    const auto& R = r.rings;
+    const i64 rr = (i64)R.ring_off.size() - 1;
+    for (i64 k = 0; k < rr; ++k) {
+      i64 a = R.ring_off[k], b = R.ring_off[k + 1];
+      for (i64 i = a; i <= b; ++i) {
+        i64 s = i < b ? i : a;
+        oxy[2 * row] = R.xy[2 * s];
+        oxy[2 * row + 1] = R.xy[2 * s + 1];
+        if (labels) lab.push_back(i < b ? r.labels[s] : mk::off::DETOUR);
+        ++row;
+      }
+      oro[++ring] = row;
+    }
+    const i64 base = ring - rr;
+    for (std::size_t k = 1; k < R.poly_off.size(); ++k) opo[++poly] = base + R.poly_off[k];
+    ogo[g + 1] = poly;
+  }
+  nb::object extra = nb::none();
+  if (labels) {
+    const mk::off::Result& r = res[0];
+    extra = nb::make_tuple(to_numpy(lab, lab.size(), 0),
+                           to_numpy(r.used_xy, r.used_xy.size() / 2, 2),
+                           to_numpy(r.used_off, r.used_off.size(), 0), r.e0);
+  }
+  return nb::make_tuple(owned(oxy, (std::size_t)rows, 2), owned(oro, (std::size_t)nrings + 1, 0),
+                        owned(opo, (std::size_t)npolys + 1, 0), owned(ogo, (std::size_t)ng + 1, 0),
+                        owned(oin, (std::size_t)ng, 4), extra);
+}
+
+}  // namespace
+
+void bind_offset(nb::module_& m) {
+  m.def("offset_rings", &offset_rings, "xy"_a.noconvert(), "ring_off"_a.noconvert(),
+        "ring_hole"_a.noconvert(), "geom_off"_a.noconvert(), "unite"_a.noconvert(),
+        "delta"_a.noconvert(), "distance"_a, "tolerance"_a, "default_rel"_a, "outer"_a,
+        "join"_a, "miter_limit"_a, "labels"_a = false, "threads"_a = 1);
+  m.attr("OFFSET_ROUND") = (int)mk::off::ROUND;
+  m.attr("OFFSET_MITER") = (int)mk::off::MITER;
+  m.attr("OFFSET_SQUARE") = (int)mk::off::SQUARE;
+  m.attr("OFFSET_FINE") = (int)mk::off::FINE;
+  m.attr("OFFSET_TOLERANCE") = (int)mk::off::TOLERANCE;
+  m.attr("OFFSET_DISTANCE") = (int)mk::off::DISTANCE;
+  m.attr("OFFSET_UNDERFLOW") = (int)mk::off::UNDERFLOW;
+  m.attr("OFFSET_UNCERTIFIED") = (int)mk::off::UNCERTIFIED;
+  m.attr("OFFSET_OVERFLOWS") = (int)mk::off::OVERFLOWS;
+  m.attr("OFFSET_DETOUR") = (long long)mk::off::DETOUR;
+}
+
+}  // namespace mk_bind

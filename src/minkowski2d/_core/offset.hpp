@@ -1,0 +1,847 @@
+// offset.hpp -- offsetting polygons by a disk (grow and shrink) on the exact overlay, with
+// a one-sided error that is certified by exact predicates.
+//
+// The offset curve. Every ring is oriented with the offset side on its right (a grow:
+// exteriors counter-clockwise, holes clockwise; a shrink: the reverse). For each vertex V
+// (between edge `in` = P -> V and edge `out` = V -> N) the curve has a *chain*: at a
+// vertex that is convex on the offset side (and at a spike) the points of a polygon
+// around V's arc, in angular order (a *fan*); elsewhere a *detour* F, V, S, where F lies
+// on `in`'s moved edge just past V's normal and S on `out`'s just before it. Between the
+// chain of V and that of N runs the moved edge of `out`. With the pieces
+//     Q_e = (a, S, F, b)        for each edge e = a -> b (S: end of a's chain, F: start
+//                               of b's chain),
+//     J_V = (V, c_1, ..., c_K)  for each fan,
+// the boundaries telescope: curve = ∂P + Σ ∂Q_e + Σ ∂J_V as chains, so the winding number
+// of the curve is [x ∈ P] + #pieces containing x whenever every piece is a simple
+// counter-clockwise polygon. A grow is then {winding >= 1} = P ∪ pieces: one overlay with
+// the rule w >= 1. A shrink builds the pieces inside (reversed rings) and gives the curve
+// weight -1: {[x ∈ P] - #pieces >= 1} = P \ pieces.
+//
+// The certificate. With r the radius, the coverage radius t_cov and the outer bound t_up
+// (for a circumscribed construction t_cov = r + mu, t_up = r + eps - mu; inscribed:
+// t_cov = r - eps + mu, t_up = r - mu; mu is the margin below), every piece is checked
+// with exact predicates (filtered double, then exact dyadic arithmetic):
+//  (E) for each edge a -> b: S and F strictly right of the line ab at distance >= t_cov
+//      (cross(b - a, p - a) < 0, cross^2 >= t_cov^2 |b - a|^2), S behind a's normal
+//      ((S - a).(b - a) <= 0) and F past b's ((F - b).(b - a) >= 0). Then Q_e is convex
+//      and counter-clockwise and contains the rectangle of points whose nearest point of
+//      the polygon lies inside the edge at distance <= t_cov, and the parts of the end
+//      vertices' disks of radius t_cov between their normal and the rays a->S, b->F.
+//  (F) for each fan: every point in the open half-plane ahead of V along `in`,
+//      consecutive points turning counter-clockwise around V, every chord's line at
+//      distance >= t_cov from V. Then J_V is simple and counter-clockwise and covers the
+//      disk of radius t_cov around V between the rays to c_1 and c_K: with (E), the
+//      sector of V's normal cone. A detour at a convex vertex (a turn too small for a fan
+//      in float64) has F at or ahead of S around V, so Q_in and Q_out cover the sector.
+//  (U) every chain point within t_up of its vertex (so every piece lies within t_up of
+//      the polygon: a piece is in the convex hull of points within t_up of a convex part
+//      of the polygon).
+// Hence P ⊕ D(t_cov) ⊆ P ∪ pieces ⊆ P ⊕ D(t_up) (for a shrink, the erosions), exactly.
+//
+// Rounding. The overlay's output vertices are either curve points (doubles, exact) or
+// crossings of two curve segments, rounded to the nearest double: each moves by at most
+// sqrt(2)/2 ulp of its largest coordinate (when rounding made the rings invalid, the
+// overlay re-nodes the rounded rings, at most 4 more times). The problem is scaled by a
+// power of two so that every coordinate of the result is below 2 in magnitude: the
+// moves are then below m = 2^-50 in all, and the margin mu = m + delta (delta: a bound
+// on the error of the input the caller passed, e.g. Fractions rounded to float64) keeps
+// the rounded boundary on its side: for a grow, P ⊕ D(r) ⊆ result ⊆ P ⊕ D(r + eps) (outer) and
+// P ⊕ D(r - eps) ⊆ result ⊆ P ⊕ D(r) (inner); for a shrink the same with erosions.
+// The construction aims mc beyond the certified bounds (mc covers its float64 error,
+// about 45 u r + 1.5 u |x| for u = 2^-53; the certificate does not depend on it), so a
+// tolerance must exceed least = 2 mu + 4 mc. Certification failing anyway is reported
+// (UNCERTIFIED), never returned.
+//
+// Trims and the simple curve. At a reflex vertex the detour F, V, S is usually replaced
+// by one point beyond the crossing of the two moved edges (certified below, Curve::trim).
+// One ring whose trimmed curve is simple (checked exactly) is then the boundary itself:
+// no overlay, nothing rounded. Otherwise the curves go to one exact overlay (rule
+// w >= 1), which nodes them and returns rings with holes.
+//
+// Miter and square joins are polygons by construction (no tolerance): built in float64
+// with the same pieces, not certified.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "exact.hpp"
+#include "exactnum.hpp"
+#include "minkowski.hpp"
+#include "overlay.hpp"
+
+namespace mk {
+namespace off {
+
+enum Join : int { ROUND = 0, MITER = 1, SQUARE = 2 };
+
+// What went wrong with one polygon (beyond the Status codes of exact.hpp).
+enum Code : int {
+  FINE = 0,
+  TOLERANCE = 1,    // the given tolerance is below `least`
+  DISTANCE = 2,     // the default tolerance cannot be met: r / 2 < least
+  UNDERFLOW = 3,    // a result of magnitude below 2^-1020 (rounding may exceed the margin)
+  UNCERTIFIED = 4,  // a piece failed its exact certificate (never expected: a bug)
+  OVERFLOWS = 5,    // a result coordinate beyond float64
+};
+
+// label of a curve segment that is a detour through a vertex of the polygon
+constexpr i64 DETOUR = -(i64(1) << 62);
+
+struct Pt {
+  double x, y;
+};
+
+// ------------------------------------------------------------------------------------
+// exact predicates on doubles: filtered (FE), exact (Dy) when the filter cannot tell
+
+inline FE num(FE, double x) { return FE{x, 0.0}; }
+inline Dy num(const Dy&, double x) { return Dy(x); }
+
+template <class F>
+inline int sign_of(F&& f) {
+  int s = fe_sign(f(FE{0.0, 0.0}));
+  if (s != UNSURE) return s;
+  return f(Dy()).sign();
+}
+
+// orientation of (a, b, c): +1 counter-clockwise
+inline int orient(Pt a, Pt b, Pt c) { return cross_sign(a.x, a.y, b.x, b.y, a.x, a.y, c.x, c.y); }
+
+// sign of (b - a) . (d - c)
+inline int dot_sign(Pt a, Pt b, Pt c, Pt d) {
+  return sign_of([&](auto z) {
+    return (num(z, b.x) - num(z, a.x)) * (num(z, d.x) - num(z, c.x)) +
+           (num(z, b.y) - num(z, a.y)) * (num(z, d.y) - num(z, c.y));
+  });
+}
+
+// sign of dist(p, line ab)^2 - t^2, i.e. of cross(b - a, p - a)^2 - t^2 |b - a|^2
+inline int line_dist_cmp(Pt a, Pt b, Pt p, double t) {
+  return sign_of([&](auto z) {
+    auto dx = num(z, b.x) - num(z, a.x), dy = num(z, b.y) - num(z, a.y);
+    auto c = dx * (num(z, p.y) - num(z, a.y)) - dy * (num(z, p.x) - num(z, a.x));
+    auto tt = num(z, t);
+    return c * c - tt * tt * (dx * dx + dy * dy);
+  });
+}
+
+// sign of |p - v|^2 - t^2
+inline int dist_cmp(Pt v, Pt p, double t) {
+  return sign_of([&](auto z) {
+    auto dx = num(z, p.x) - num(z, v.x), dy = num(z, p.y) - num(z, v.y);
+    auto tt = num(z, t);
+    return dx * dx + dy * dy - tt * tt;
+  });
+}
+
+// x * 2^k as ldexp does (exact unless the result is subnormal), by at most two
+// multiplications with normal powers of two: cheaper than ldexp in a loop
+struct Pow2 {
+  double a = 1, b = 1;
+  explicit Pow2(int k) {
+    int k1 = k / 2, k2 = k - k1;
+    a = std::ldexp(1.0, k1);
+    b = std::ldexp(1.0, k2);
+  }
+  double operator()(double x) const { return x * a * b; }
+};
+
+// rounded up / down (one step past the rounded value: an upper / lower bound)
+inline double up(double x) { return std::nextafter(x, INFINITY); }
+inline double down(double x) { return std::nextafter(x, -INFINITY); }
+
+// ------------------------------------------------------------------------------------
+// parameters of one offset (scaled so that every coordinate is below 2)
+
+struct Setup {
+  bool grow = true;
+  int join = ROUND;
+  bool circ = true;   // circumscribed pieces (grow outer, shrink inner)
+  double r = 0;       // radius
+  double t_cov = 0;   // the pieces cover the band of this width
+  double t_up = 0;    // ... and stay within this distance
+  double mc = 0;      // construction margin
+  double rho = 0;     // circ: moved edges' distance; inscribed: the points' radius
+  double phimax = 0;  // largest angle of one corner (circ) or chord (inscribed)
+  double eta = 0;     // inscribed: angle of the first/last point past the normals
+  double limit = 2;   // miter limit
+};
+
+// ------------------------------------------------------------------------------------
+// rings: cleaned and oriented
+
+// Removes consecutive duplicates (done by make_ring) and vertices where the ring runs
+// straight on (exactly collinear, between their neighbours); a spike stays (a convex
+// vertex of exterior angle pi).
+inline void drop_straight(std::vector<Pt>& v) {
+  std::size_t n = v.size();
+  if (n < 3) return;
+  std::vector<char> alive(n, 1);
+  std::vector<std::size_t> prv(n), nxt(n), stack;
+  for (std::size_t i = 0; i < n; ++i) {
+    prv[i] = (i + n - 1) % n;
+    nxt[i] = (i + 1) % n;
+    stack.push_back(i);
+  }
+  std::size_t left = n;
+  auto straight = [&](std::size_t i) {
+    const Pt &p = v[prv[i]], &q = v[i], &s = v[nxt[i]];
+    if (orient(p, q, s) != 0) return false;
+    // collinear: straight on when q - p and s - q point the same way (signs suffice)
+    auto sg = [](double d) { return (d > 0) - (d < 0); };
+    int d = sg(q.x - p.x) * sg(s.x - q.x) + sg(q.y - p.y) * sg(s.y - q.y);
+    return d > 0;
+  };
+  while (!stack.empty() && left > 2) {
+    std::size_t i = stack.back();
+    stack.pop_back();
+    if (!alive[i] || !straight(i)) continue;
+    alive[i] = 0;
+    --left;
+    std::size_t a = prv[i], b = nxt[i];
+    nxt[a] = b;
+    prv[b] = a;
+    stack.push_back(a);
+    stack.push_back(b);
+  }
+  std::vector<Pt> out;
+  out.reserve(left);
+  for (std::size_t i = 0; i < n; ++i)
+    if (alive[i]) out.push_back(v[i]);
+  v.swap(out);
+}
+
+inline std::vector<Pt> to_pts(const ms::Ring& r) {
+  std::vector<Pt> v((std::size_t)r.n());
+  for (i64 i = 0; i < r.n(); ++i) v[i] = Pt{r.x(i), r.y(i)};
+  return v;
+}
+
+// ------------------------------------------------------------------------------------
+// the curve of one ring
+
+class Curve {
+ public:
+  std::vector<Pt> pts;   // the closed curve
+  std::vector<i64> lab;  // label of segment k -> k + 1: edge e (>= 0), -1 - vertex, DETOUR
+  bool certified = true;
+
+  // v: the ring (n >= 1), offset side on the right; base: global index of v[0]
+  void build(const std::vector<Pt>& v, const Setup& s, i64 base) {
+    pts.clear();
+    lab.clear();
+    certified = true;
+    const std::size_t n = v.size();
+    if (n == 1) {
+      disk(v[0], s, base);
+      return;
+    }
+    // edges: unit direction and right normal
+    ex_.resize(n);
+    ey_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Pt &a = v[i], &b = v[(i + 1) % n];
+      double dx = b.x - a.x, dy = b.y - a.y, L = std::hypot(dx, dy);
+      ex_[i] = dx / L;
+      ey_[i] = dy / L;
+    }
+    cs_.assign(n + 1, 0);
+    fan_.assign(n, 0);
+    chain_.clear();
+    for (std::size_t j = 0; j < n; ++j) {
+      cs_[j] = chain_.size();
+      vertex(v, j, s);
+    }
+    cs_[n] = chain_.size();
+    if (s.join == ROUND) certify(v, s);
+    if (!certified) return;
+    trim(v, s);
+    // the curve: chains joined by the moved edges
+    for (std::size_t j = 0; j < n; ++j) {
+      if (trim_[j]) {  // a trimmed detour: the crossing of the moved edges
+        pts.push_back(tx_[j]);
+        lab.push_back(base + (i64)j);
+        continue;
+      }
+      std::size_t k0 = cs_[j], k1 = cs_[j + 1];
+      i64 vl = fan_[j] ? -1 - (base + (i64)j) : DETOUR;
+      for (std::size_t k = k0; k < k1; ++k) {
+        pts.push_back(chain_[k]);
+        lab.push_back(k + 1 < k1 ? vl : base + (i64)j);  // the last: moved edge j
+      }
+    }
+  }
+
+ private:
+  std::vector<double> ex_, ey_;
+  std::vector<std::size_t> cs_;  // chain of vertex j: chain_[cs_[j] .. cs_[j + 1])
+  std::vector<char> fan_;        // 1: a fan, 0: a detour (F, V, S)
+  std::vector<Pt> chain_;
+  std::vector<char> trim_;       // 1: the detour of vertex j is trimmed at tx_[j]
+  std::vector<Pt> tx_;
+
+  // p inside or on the convex counter-clockwise quadrilateral (a, b, c, d)
+  static bool in_quad(Pt a, Pt b, Pt c, Pt d, Pt p) {
+    return orient(a, b, p) >= 0 && orient(b, c, p) >= 0 && orient(c, d, p) >= 0 &&
+           orient(d, a, p) >= 0;
+  }
+  // p within t of the segment ab (exactly)
+  static bool near_segment(Pt a, Pt b, Pt p, double t) {
+    return dot_sign(a, p, a, b) >= 0 && dot_sign(b, p, b, a) >= 0 &&
+           line_dist_cmp(a, b, p, t) <= 0;
+  }
+
+  // Trimming. At a detour of a reflex vertex V the moved edges S_in -> F_in and
+  // S_out -> F_out usually cross at X; the loop X, F_in, V, S_out (the kite) is then cut
+  // off. As chains, raw curve - trimmed curve = the kite (+ slivers, below), so the winding
+  // number drops by one inside the kite: nothing changes where it was >= 2 there. With
+  // beta the turn at V: if beta <= 90 degrees, the kite lies in both pieces
+  // Q_in = (P, S_in, F_in, V) and Q_out = (V, S_out, F_out, N) (convex: F_in in Q_out and
+  // S_out in Q_in, checked), so it was >= 2. If beta > 90 degrees, a kite point x with
+  // winding 1 lies in Q_in (or Q_out) only, outside P, so its nearest feature would be
+  // the interior of edge in, on the far side of the line VX; but there
+  // s < h tan(beta / 2) (s back from V along in, h from in's line), and the foot of x on
+  // out's line lies at s |cos beta| + h sin beta <= t_cov tan(beta / 2) <= |V X|
+  // cos-projected <= that of X' (beyond both lines), which is checked to lie on the edge
+  // out: so x is closer to out (at |s sin beta + h cos beta| < h), a contradiction. Such
+  // points are not within t_cov of P: removing them keeps the guarantee (the same for
+  // out, and for a shrink with the complement of P). X is rounded to a double X' on or beyond both moved edges (right of both lines),
+  // so the sliver between S_in, X, F_out and S_in, X', F_out (a clockwise loop) is
+  // *added*: the region only grows there, and X' is checked to lie within t_up of both
+  // edges, so the sliver (the hull of points within t_up of them) stays within t_up.
+  // Trims on the two ends of one edge must keep their order along it.
+  void trim(const std::vector<Pt>& v, const Setup& s) {
+    const std::size_t n = v.size();
+    trim_.assign(n, 0);
+    tx_.resize(n);
+    if (n < 3) return;
+    auto first = [&](std::size_t j) { return chain_[cs_[j]]; };
+    auto last = [&](std::size_t j) { return chain_[cs_[j + 1] - 1]; };
+    for (std::size_t j = 0; j < n; ++j) {
+      if (fan_[j]) continue;
+      const std::size_t jp = (j + n - 1) % n, jn = (j + 1) % n;
+      const Pt V = v[j], P = v[jp], N = v[jn];
+      if (orient(P, V, N) >= 0) continue;  // a detour at a convex vertex: not trimmed
+      const Pt Sin = last(jp), Fin = chain_[cs_[j]], Sout = chain_[cs_[j] + 2], Fout = first(jn);
+      int o1 = orient(Sin, Fin, Sout), o2 = orient(Sin, Fin, Fout);
+      int o3 = orient(Sout, Fout, Sin), o4 = orient(Sout, Fout, Fin);
+      if (o1 * o2 >= 0 || o3 * o4 >= 0) continue;  // no proper crossing
+      const bool obtuse = dot_sign(P, V, V, N) < 0;
+      if (!obtuse && (!in_quad(V, Sout, Fout, N, Fin) || !in_quad(P, Sin, Fin, V, Sout)))
+        continue;
+      // X in extended precision, rounded (a guess; every check below is exact)
+      using LD = long double;
+      LD ux = (LD)Fin.x - Sin.x, uy = (LD)Fin.y - Sin.y, wx = (LD)Fout.x - Sout.x,
+         wy = (LD)Fout.y - Sout.y;
+      LD t = (((LD)Sout.x - Sin.x) * wy - ((LD)Sout.y - Sin.y) * wx) / (ux * wy - uy * wx);
+      Pt X0{(double)(Sin.x + t * ux), (double)(Sin.y + t * uy)};
+      if (!(X0.x - X0.x == 0) || !(X0.y - X0.y == 0)) continue;
+      // X': a few units in the last place outwards along the bisector of the normals,
+      // where the filtered orientations decide (on the lines they would go exact)
+      bool found = false;
+      Pt X = X0;
+      const double bx = ey_[jp] + ey_[j], by = -ex_[jp] - ex_[j];  // n_in + n_out
+      double step = std::max(std::fabs(X0.x), std::fabs(X0.y)) * 0x1p-50;
+      for (int k = 0; k < 40 && !found; ++k, step *= 2) {
+        Pt c = k == 0 ? X0 : Pt{X0.x + step * bx, X0.y + step * by};  // X0 first: often exact
+        if (orient(Sin, Fin, c) <= 0 && orient(Sout, Fout, c) <= 0) {
+          X = c;
+          found = true;
+        }
+      }
+      if (!found) continue;
+      if (s.join == ROUND && (!near_segment(P, V, X, s.t_up) || !near_segment(V, N, X, s.t_up)))
+        continue;
+      if (obtuse && (dot_sign(P, X, P, V) < 0 || dot_sign(V, X, V, P) < 0 ||
+                     dot_sign(V, X, V, N) < 0 || dot_sign(N, X, N, V) < 0))
+        continue;
+      trim_[j] = 1;
+      tx_[j] = X;
+    }
+    // order along each edge with trims at both ends
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t j = (i + 1) % n;
+      if (!trim_[i] || !trim_[j]) continue;
+      const Pt S = chain_[cs_[i] + 2], F = chain_[cs_[j]];  // the raw moved edge i
+      if (dot_sign(tx_[i], tx_[j], S, F) <= 0) trim_[i] = trim_[j] = 0;
+    }
+  }
+
+  static Pt at(Pt V, double R, double nx, double ny, double exx, double eyy, double a) {
+    double c = std::cos(a), sn = std::sin(a);
+    return Pt{V.x + R * (nx * c + exx * sn), V.y + R * (ny * c + eyy * sn)};
+  }
+
+  void vertex(const std::vector<Pt>& v, std::size_t j, const Setup& s) {
+    const std::size_t n = v.size();
+    const std::size_t ji = (j + n - 1) % n;  // edge in
+    const Pt V = v[j];
+    double eix = ex_[ji], eiy = ey_[ji], eox = ex_[j], eoy = ey_[j];
+    double nix = eiy, niy = -eix, nox = eoy, noy = -eox;  // right normals
+    int o = n == 2 ? 0 : orient(v[ji], V, v[(j + 1) % n]);
+    bool convex = o >= 0;  // o == 0 after cleaning: a spike (exterior angle pi)
+    double theta = 0;
+    if (convex) {
+      double cr = eix * eoy - eiy * eox, dt = eix * eox + eiy * eoy;
+      theta = o == 0 ? M_PI : std::atan2(std::fabs(cr), dt);
+    }
+    if (convex && s.join != ROUND) {
+      sharp(V, nix, niy, nox, noy, eix, eiy, eox, eoy, theta, s);
+      fan_[j] = 1;
+      return;
+    }
+    if (convex && s.circ) {
+      // k corners at angles (i - 1/2) phi, radius rho / cos(phi / 2): tangent chords
+      double k = std::max(1.0, std::ceil(theta / s.phimax));
+      double phi = theta / k, R = s.rho / std::cos(phi / 2);
+      if (R * std::sin(phi / 2) >= s.mc) {
+        for (double i = 1; i <= k; ++i)
+          chain_.push_back(at(V, R, nix, niy, eix, eiy, (i - 0.5) * phi));
+        fan_[j] = 1;
+        return;
+      }
+    } else if (convex) {
+      // k + 1 points on the circle rho, from eta past in's normal to eta before out's
+      double span = theta - 2 * s.eta;
+      if (span >= 2 * s.eta) {
+        double k = std::max(1.0, std::ceil(span / s.phimax)), step = span / k;
+        for (double i = 0; i <= k; ++i)
+          chain_.push_back(at(V, s.rho, nix, niy, eix, eiy, s.eta + i * step));
+        fan_[j] = 1;
+        return;
+      }
+    }
+    // a detour: F past V's normal on in's side, S before it on out's (at a convex vertex
+    // of a turn too small for a fan, F must end up at or ahead of S around V). The points
+    // on the normals, rounded, are kept when they already lie on the right side (axis-
+    // parallel edges: exactly on it); else they are pushed along the edge by mc.
+    const double rho = s.join == ROUND ? s.rho : s.r;
+    const Pt P = v[ji], N = v[(j + 1) % n];
+    Pt F{V.x + rho * nix, V.y + rho * niy}, S{V.x + rho * nox, V.y + rho * noy};
+    if (s.join == ROUND) {
+      if (dot_sign(V, F, P, V) < 0) F = Pt{F.x + s.mc * eix, F.y + s.mc * eiy};
+      if (dot_sign(V, S, V, N) > 0) S = Pt{S.x - s.mc * eox, S.y - s.mc * eoy};
+      for (double f = 2 * s.mc; convex && orient(V, S, F) < 0 && f < 0x1p1000; f *= 2) {
+        F = Pt{V.x + rho * nix + f * eix, V.y + rho * niy + f * eiy};
+        S = Pt{V.x + rho * nox - f * eox, V.y + rho * noy - f * eoy};
+      }
+    }
+    chain_.push_back(F);
+    chain_.push_back(V);
+    chain_.push_back(S);
+    fan_[j] = 0;
+  }
+
+  // miter and square joins at a convex vertex
+  void sharp(Pt V, double nix, double niy, double nox, double noy, double eix, double eiy,
+             double eox, double eoy, double theta, const Setup& s) {
+    double half = theta / 2, r = s.r;
+    if (s.join == MITER && std::cos(half) * s.limit >= 1.0) {
+      double d = 1.0 + (nix * nox + niy * noy);
+      chain_.push_back(Pt{V.x + r * (nix + nox) / d, V.y + r * (niy + noy) / d});
+      return;
+    }
+    double h = r * (s.join == MITER ? s.limit : 1.0);
+    double t = (h - r * std::cos(half)) / std::sin(half);
+    chain_.push_back(Pt{V.x + r * nix + t * eix, V.y + r * niy + t * eiy});
+    chain_.push_back(Pt{V.x + r * nox - t * eox, V.y + r * noy - t * eoy});
+  }
+
+  // a point grows into a disk
+  void disk(Pt V, const Setup& s, i64 base) {
+    bool circ = s.circ || s.join != ROUND;
+    double step = s.join == ROUND ? s.phimax : M_PI / 2;
+    double k = std::max(3.0, std::ceil(2 * M_PI / step)), phi = 2 * M_PI / k;
+    double rho = s.join == ROUND ? s.rho : s.r;
+    double R = circ ? rho / std::cos(phi / 2) : rho, a0 = circ ? 0.5 : 0.0;
+    for (double i = 0; i < k; ++i) {
+      double a = (i + a0) * phi;
+      pts.push_back(Pt{V.x + R * std::cos(a), V.y + R * std::sin(a)});
+      lab.push_back(-1 - base);
+    }
+    if (s.join != ROUND) return;
+    // certificate: within t_up, chords at >= t_cov, turning once counter-clockwise
+    const std::size_t m = pts.size();
+    int down_turns = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      const Pt &p = pts[i], &q = pts[(i + 1) % m];
+      if (dist_cmp(V, p, s.t_up) > 0 || orient(V, p, q) <= 0 ||
+          line_dist_cmp(p, q, V, s.t_cov) < 0)
+        certified = false;
+      bool pu = p.y > V.y || (p.y == V.y && p.x > V.x);
+      bool qu = q.y > V.y || (q.y == V.y && q.x > V.x);
+      down_turns += pu && !qu;
+    }
+    if (down_turns != 1) certified = false;
+  }
+
+  // the exact checks (E), (F), (U) of the header
+  void certify(const std::vector<Pt>& v, const Setup& s) {
+    const std::size_t n = v.size();
+    for (std::size_t i = 0; i < n && certified; ++i) {
+      const Pt &a = v[i], &b = v[(i + 1) % n];
+      const Pt Sa = chain_[cs_[i + 1] - 1];  // the end of a's chain
+      const std::size_t jb = (i + 1) % n;
+      const Pt Fb = chain_[cs_[jb]];
+      if (orient(a, b, Sa) >= 0 || line_dist_cmp(a, b, Sa, s.t_cov) < 0 ||
+          dot_sign(a, Sa, a, b) > 0)
+        certified = false;
+      if (orient(a, b, Fb) >= 0 || line_dist_cmp(a, b, Fb, s.t_cov) < 0 ||
+          dot_sign(b, Fb, a, b) < 0)
+        certified = false;
+    }
+    for (std::size_t j = 0; j < n && certified; ++j) {
+      const Pt V = v[j], P = v[(j + n - 1) % n];
+      std::size_t k0 = cs_[j], k1 = cs_[j + 1];
+      if (!fan_[j]) {
+        const Pt &F = chain_[k0], &S = chain_[k0 + 2];
+        if (dist_cmp(V, F, s.t_up) > 0 || dist_cmp(V, S, s.t_up) > 0) certified = false;
+        // at a convex vertex (or a spike) F must be at or ahead of S around V
+        int o = n == 2 ? 0 : orient(P, V, v[(j + 1) % n]);
+        if (o >= 0 && orient(V, S, F) < 0) certified = false;
+        if (o == 0 && n >= 2) certified = false;  // a spike always gets a fan
+        continue;
+      }
+      for (std::size_t k = k0; k < k1; ++k) {
+        const Pt& c = chain_[k];
+        if (dist_cmp(V, c, s.t_up) > 0 || dot_sign(P, V, V, c) <= 0) certified = false;
+        if (k + 1 < k1) {
+          const Pt& d = chain_[k + 1];
+          if (orient(V, c, d) <= 0 || line_dist_cmp(c, d, V, s.t_cov) < 0) certified = false;
+        }
+      }
+    }
+  }
+};
+
+// ------------------------------------------------------------------------------------
+// one polygonal set
+
+struct Params {
+  double distance = 0;     // signed
+  double tolerance = NAN;  // NaN: the default
+  double default_rel = 1e-3;
+  bool outer = true;
+  int join = ROUND;
+  double limit = 2.0;
+};
+
+struct Result {
+  int status = OK;   // Status of exact.hpp
+  int code = FINE;   // Code above
+  double least = 0;  // the least tolerance at this magnitude
+  double eps = 0;    // the tolerance used
+  int e0 = 0;        // the scale: coordinates were multiplied by 2^-e0
+  ov::Rings rings;   // the result (unscaled unless keep_scaled)
+  std::vector<double> used_xy;  // with labels: the rings offset (scaled), offset side right
+  std::vector<i64> used_off{0};
+  std::vector<i64> labels;      // with labels: per output vertex, the label of its edge
+};
+
+// rings: (xy, n, hole) of one polygonal set; unite: overlapping parts are united first;
+// delta: a bound on the distance between the given rings and the true input.
+class Offsetter {
+ public:
+  void run(const std::vector<ms::Ring>& input, bool unite, double delta, const Params& p,
+           bool want_labels, Result& res) {
+    res = Result();
+    res.rings.want_lines = want_labels;
+    const double r0 = std::fabs(p.distance);
+    const bool grow = p.distance > 0;
+    // rings with the inside on the left
+    std::vector<std::vector<Pt>> rings;
+    if (unite) {
+      united(input, rings, delta);
+    } else {
+      for (const ms::Ring& r : input) rings.push_back(to_pts(r));
+    }
+    for (auto& v : rings) drop_straight(v);
+    if (r0 == 0) {  // the polygon itself (regularized: the overlay of its rings)
+      ov::Geo g;
+      std::vector<ov::EdgeIn> in;
+      for (auto& v : rings) {
+        if (v.size() < 3) continue;
+        i64 first = (i64)g.pts.size();
+        for (const Pt& q : v) g.point(ov::dd(q.x), ov::dd(q.y));
+        ov::add_ring(g, first, (i64)v.size(), 1, 0, in);
+      }
+      ov::Overlay o(g);
+      o.run(in, ov::UNION, res.rings);
+      res.status = res.rings.status;
+      return;
+    }
+    double big = 0;
+    for (auto& v : rings)
+      for (const Pt& q : v) big = std::max(big, std::max(std::fabs(q.x), std::fabs(q.y)));
+    // scale: every coordinate of the problem below 1/2, of the result below 2
+    double mx = std::max(big, r0);
+    int e;
+    std::frexp(mx, &e);
+    const int e0 = e + 1;
+    res.e0 = e0;
+    Setup s;
+    s.grow = grow;
+    s.join = p.join;
+    s.limit = p.limit;
+    s.r = std::ldexp(r0, -e0);
+    double dl = delta > 0 ? up(std::ldexp(delta, -e0)) : 0.0;
+    if (e0 > 0) dl = up(dl + 0x1p-1073);  // scaling down may round subnormals
+    // the overlay's rounding of a crossing (below sqrt(2)/2 ulp), up to 5 times when it
+    // re-nodes rounded rings that came out invalid: below 4 ulp
+    const double m = 0x1p-50;
+    const double mu = up(m + dl);
+    s.mc = up(std::ldexp(s.r, -45) + 0x1p-50);
+    const double least = up(2 * mu + 4 * s.mc);
+    res.least = std::ldexp(least, e0);
+    if (p.join == ROUND) {
+      double eps;
+      if (std::isnan(p.tolerance)) {
+        eps = std::min(std::max(p.default_rel * s.r, least * (1 + 0x1p-20)), s.r / 2);
+        if (eps < least) {
+          res.code = DISTANCE;
+          return;
+        }
+      } else {
+        eps = std::min(std::ldexp(p.tolerance, -e0), s.r / 2);
+        if (eps < least) {
+          res.code = TOLERANCE;
+          return;
+        }
+      }
+      res.eps = std::ldexp(eps, e0);
+      s.circ = p.outer == grow;
+      if (s.circ) {
+        s.t_cov = up(s.r + mu);
+        s.t_up = down(down(s.r + eps) - mu);
+        s.rho = up(s.t_cov + s.mc);
+        double Rmax = down(s.t_up - s.mc);
+        s.phimax = std::min(2 * std::acos(s.rho / Rmax), M_PI / 2);
+      } else {
+        s.t_cov = up(up(s.r - eps) + mu);
+        s.t_up = down(s.r - mu);
+        s.rho = down(s.t_up - 2 * s.mc);
+        double ct = up(s.t_cov + s.mc);
+        s.phimax = std::min(2 * std::acos(ct / s.rho), M_PI);
+        s.eta = 2 * s.mc / s.rho;
+      }
+    } else {
+      s.circ = true;
+      s.rho = s.r;
+    }
+    // the curves
+    const int w = grow ? 1 : -1;
+    i64 base = 0;
+    std::size_t nc = 0;
+    std::vector<Pt> sv;
+    const Pow2 down_scale(-e0);
+    for (auto& v0 : rings) {
+      if (v0.empty()) continue;
+      if (!grow && v0.size() < 3) continue;  // no area: nothing to shrink
+      // scaled (exact, but for coordinates that become subnormal: delta covers them;
+      // then vertices may coincide or become collinear: cleaned again)
+      sv.clear();
+      for (const Pt& q : v0) {
+        Pt t{down_scale(q.x), down_scale(q.y)};
+        if (sv.empty() || sv.back().x != t.x || sv.back().y != t.y) sv.push_back(t);
+      }
+      while (sv.size() > 1 && sv.front().x == sv.back().x && sv.front().y == sv.back().y)
+        sv.pop_back();
+      drop_straight(sv);
+      if (!grow && sv.size() < 3) continue;
+      if (!grow) std::reverse(sv.begin(), sv.end());
+      if (curves_.size() <= nc) curves_.emplace_back();
+      Curve& cv = curves_[nc++];
+      cv.build(sv, s, base);
+      if (!cv.certified) {
+        res.code = UNCERTIFIED;
+        return;
+      }
+      if (want_labels) {
+        for (const Pt& q : sv) {
+          res.used_xy.push_back(q.x);
+          res.used_xy.push_back(q.y);
+        }
+        res.used_off.push_back((i64)res.used_xy.size() / 2);
+      }
+      base += (i64)sv.size();
+    }
+    // one simple curve: it is the boundary (no overlay)
+    if (nc == 1 && simple(curves_[0].pts)) {
+      direct(curves_[0], grow, want_labels, res);
+    } else {
+      ov::Geo g;
+      std::vector<ov::EdgeIn> in;
+      std::vector<i64> line_label;
+      for (std::size_t k = 0; k < nc; ++k) add_curve(g, curves_[k].pts, curves_[k].lab, w, in, line_label);
+      ov::Overlay o(g);
+      o.run(in, ov::UNION, res.rings);
+      if (want_labels) {
+        // the lines of the output edges, unless the overlay had to re-node its rounded
+        // rings (then they are unknown: DETOUR, and offset_arcs labels by distances)
+        const std::size_t nv = res.rings.xy.size() / 2;
+        res.labels.assign(nv, DETOUR);
+        if (res.rings.line.size() == nv)
+          for (std::size_t k = 0; k < nv; ++k) res.labels[k] = line_label[res.rings.line[k]];
+      }
+    }
+    finish(e0, want_labels, res);
+  }
+
+ private:
+  std::vector<Curve> curves_;
+
+  // Is the closed polyline p simple (no two segments meet but consecutive ones at their
+  // common end, no segment of length zero)? Exact: boxes, then orientations.
+  static bool simple(const std::vector<Pt>& p) {
+    const i64 n = (i64)p.size();
+    if (n < 3) return false;
+    std::vector<double> x0(n), x1(n), y0(n), y1(n);
+    for (i64 i = 0; i < n; ++i) {
+      const Pt &a = p[i], &b = p[(i + 1) % n];
+      if (a.x == b.x && a.y == b.y) return false;
+      x0[i] = std::min(a.x, b.x);
+      x1[i] = std::max(a.x, b.x);
+      y0[i] = std::min(a.y, b.y);
+      y1[i] = std::max(a.y, b.y);
+    }
+    bool ok = true;
+    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 i, i64 j) {
+      if (!ok) return;
+      const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
+      if (j == i + 1 || (i == 0 && j == n - 1)) {
+        // consecutive: they must not fold back onto each other
+        const Pt &u = j == i + 1 ? a : c, &m = j == i + 1 ? b : d, &z = j == i + 1 ? d : b;
+        if (orient(u, m, z) == 0 && dot_sign(u, m, m, z) < 0) ok = false;
+        return;
+      }
+      int o1 = orient(a, b, c), o2 = orient(a, b, d);
+      if (o1 * o2 > 0) return;
+      int o3 = orient(c, d, a), o4 = orient(c, d, b);
+      if (o3 * o4 > 0) return;
+      if (o1 == 0 && o2 == 0) {
+        // collinear: they meet when their extents along the line overlap
+        auto key = [&](const Pt& q) { return a.x != b.x ? q.x : q.y; };
+        double s0 = std::min(key(a), key(b)), s1 = std::max(key(a), key(b));
+        double t0 = std::min(key(c), key(d)), t1 = std::max(key(c), key(d));
+        if (t0 > s1 || s0 > t1) return;
+      }
+      ok = false;
+    });
+    return ok;
+  }
+
+  // The region of one simple curve: its inside when it turns the way the rule selects
+  // (counter-clockwise for a grow, clockwise for a shrink, whose curve has weight -1),
+  // else nothing. Straight vertices dropped, from the least (x, y) vertex.
+  static void direct(const Curve& cv, bool grow, bool want_labels, Result& res) {
+    std::vector<Pt> p = cv.pts;
+    std::vector<i64> lab = cv.lab;
+    const std::size_t n = p.size();
+    std::size_t lo = 0;
+    for (std::size_t i = 1; i < n; ++i)
+      if (p[i].x < p[lo].x || (p[i].x == p[lo].x && p[i].y < p[lo].y)) lo = i;
+    int o = orient(p[(lo + n - 1) % n], p[lo], p[(lo + 1) % n]);  // nonzero: extreme
+    ov::Rings& R = res.rings;
+    R.clear();
+    if ((o > 0) != grow) return;  // winding -1 inside (a shrink that erases everything)
+    if (!grow) {
+      std::reverse(p.begin(), p.end());
+      std::vector<i64> rl(n);
+      for (std::size_t i = 0; i < n; ++i) rl[i] = lab[(2 * n - 2 - i) % n];
+      lab.swap(rl);
+      lo = n - 1 - lo;
+    }
+    std::vector<Pt> q;
+    std::vector<i64> ql;
+    for (std::size_t k = 0; k < n; ++k) {  // lo is extreme (never straight): q starts there
+      std::size_t i = (lo + k) % n;
+      if (orient(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) == 0) continue;  // straight on
+      q.push_back(p[i]);
+      ql.push_back(lab[i]);
+    }
+    for (std::size_t k = 0; k < q.size(); ++k) {
+      R.xy.push_back(q[k].x);
+      R.xy.push_back(q[k].y);
+      if (want_labels) res.labels.push_back(ql[k]);
+    }
+    R.ring_off.push_back((i64)q.size());
+    R.poly_off.push_back(1);
+  }
+
+  // status, scale back, range
+  static void finish(int e0, bool want_labels, Result& res) {
+    if (res.rings.status != OK) {
+      res.status = res.rings.status;
+      return;
+    }
+    if (want_labels) return;  // scaled
+    double top = 0;
+    const Pow2 up_scale(e0);
+    for (double& c : res.rings.xy) {
+      c = up_scale(c);
+      top = std::max(top, std::fabs(c));
+    }
+    if (!(top <= 1.79769313486231570815e308)) res.code = OVERFLOWS;
+    else if (top > 0 && top < 0x1p-1020) res.code = UNDERFLOW;
+  }
+
+ private:
+  // the union of the rings (overlapping parts), rounded: delta grows by the rounding
+  void united(const std::vector<ms::Ring>& input, std::vector<std::vector<Pt>>& rings,
+              double& delta) {
+    ov::Geo g;
+    std::vector<ov::EdgeIn> in;
+    double big = 0;
+    std::vector<ms::Ring> pts_only;
+    for (const ms::Ring& r : input) {
+      if (r.n() < 3) {
+        pts_only.push_back(r);
+        continue;
+      }
+      i64 first = (i64)g.pts.size();
+      for (i64 i = 0; i < r.n(); ++i) {
+        g.point(ov::dd(r.x(i)), ov::dd(r.y(i)));
+        big = std::max(big, std::max(std::fabs(r.x(i)), std::fabs(r.y(i))));
+      }
+      ov::add_ring(g, first, r.n(), 1, 0, in);
+    }
+    ov::Overlay o(g);
+    ov::Rings out;
+    o.run(in, ov::UNION, out);
+    for (std::size_t k = 0; k + 1 < out.ring_off.size(); ++k) {
+      std::vector<Pt> v;
+      for (i64 i = out.ring_off[k]; i < out.ring_off[k + 1]; ++i)
+        v.push_back(Pt{out.xy[2 * i], out.xy[2 * i + 1]});
+      rings.push_back(std::move(v));
+    }
+    for (const ms::Ring& r : pts_only) rings.push_back(to_pts(r));
+    if (big > 0) {
+      int e;
+      std::frexp(big, &e);
+      delta = up(delta + std::ldexp(1.0, std::max(e - 52, -1074)));
+    }
+  }
+
+  static void add_curve(ov::Geo& g, const std::vector<Pt>& pts, const std::vector<i64>& lab,
+                        int w, std::vector<ov::EdgeIn>& in, std::vector<i64>& line_label) {
+    const i64 n = (i64)pts.size();
+    if (n < 2) return;
+    const i64 p0 = (i64)g.pts.size(), v0 = (i64)g.verts.size();
+    for (const Pt& q : pts) g.point(ov::dd(q.x), ov::dd(q.y));
+    for (i64 i = 0; i < n; ++i) g.vert_point(p0 + i);
+    for (i64 i = 0; i < n; ++i) {
+      i64 a = p0 + i, b = p0 + (i + 1) % n;
+      if (ov::p_eq(g.pts[a], g.pts[b])) continue;
+      i64 l = g.line(a, b);
+      line_label.resize((std::size_t)l + 1, DETOUR);
+      line_label[l] = lab[i];
+      in.push_back(ov::EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, 0});
+    }
+  }
+};
+
+}  // namespace off
+}  // namespace mk
