@@ -60,8 +60,9 @@ void bind_mesh_planner(nb::module_& m) {
                nb::gil_scoped_release nogil;
                mk::PlanScratch S;
                S.init((std::size_t)self.base.items());
-               mk::MeshScratch MS;
-               MS.init(self.M.nvert(), self.M.npoly());
+               // kept per thread between calls (query() sizes it to the mesh; every
+               // query leaves it cleared)
+               thread_local mk::MeshScratch MS;
                st = self.query(sx, sy, gx, gy, out, grp, S, MS);
              }
              return nb::make_tuple(st, grp, to_numpy(out, out.size() / 2, 2));

@@ -564,11 +564,28 @@ struct Lim {  // a ray from the root with direction (x2 - x1, y2 - y1)
   double x1, y1, x2, y2;
 };
 
+struct MeshRoot {
+  double x, y, g;
+  int parent, v;
+};
+struct MeshNode {
+  double f, g;
+  int kind;   // 0 interval, 1 vertex, 2 final
+  int root;   // interval / final: its root; vertex: the parent root
+  int poly, k, v;
+  int restr;  // vertex: 0 none, +1 / -1: allowed where restr * side(R) >= 0
+  Lim L, R;
+};
+
 struct MeshScratch {
+  std::vector<MeshRoot> roots;
+  std::vector<MeshNode> nodes;
   std::vector<double> best;   // per vertex: the least length it was reached with
   std::vector<int> touched;   // vertices whose best was set
   std::vector<char> tmark;    // per polygon: contains the target
   std::vector<int> spolys, tpolys;
+  std::vector<int> fan;       // the search's own buffers, kept between queries
+  std::vector<std::pair<double, int>> heap;
   void init(int nv, int np) {
     best.assign(nv, std::numeric_limits<double>::infinity());
     tmark.assign(np, 0);
@@ -584,32 +601,46 @@ struct MeshPlanner {
   // counters of the last query (tests and benchmarks)
   mutable i64 n_expanded = 0, n_pushed = 0;
 
+  // per polygon: a dead end (Polyanya's dead-end pruning): one neighbour and no junction.
+  // A path entering it (not to a target inside) leaves through the same edge -- the only
+  // way out, the vertices off that edge being corners whose free angle is the polygon's
+  // own -- and the segment between the two crossings (on the edge, free) is shorter; the
+  // bends at the edge's ends are pushed by the node that made the interval.
+  std::vector<char> dead;
+
   int build(const double* meshbox) {
     base.build_base();
     for (int q = 0; q < 4; ++q) mb[q] = meshbox[q];
     if (has_zero_width(base)) return status = MESH_ZERO_WIDTH;
-    return status = M.build(base, mb);
+    status = M.build(base, mb);
+    dead.assign(M.npoly(), 0);
+    if (status == MESH_OK)
+      for (int p = 0; p < M.npoly(); ++p) {
+        int nbs = 0;
+        bool junction = false;
+        for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) {
+          nbs += M.pn[i] >= 0;
+          junction = junction || (M.vflag[M.pv[i]] & JUNCTION);
+        }
+        dead[p] = nbs == 1 && !junction;
+      }
+    return status;
   }
 
   static int side(const Lim& l, double rx, double ry, double x, double y) {
     return cross_sign(l.x1, l.y1, l.x2, l.y2, rx, ry, x, y);
   }
 
-  struct Root {
-    double x, y, g;
-    int parent, v;
-  };
-  struct Node {
-    double f, g;
-    int kind;   // 0 interval, 1 vertex, 2 final
-    int root;   // interval / final: its root; vertex: the parent root
-    int poly, k, v;
-    int restr;  // vertex: 0 none, +1 / -1: allowed where restr * side(R) >= 0
-    Lim L, R;
-  };
+  using Root = MeshRoot;
+  using Node = MeshNode;
 
+  // |ab|: sqrt of the sum of squares where that neither overflows nor loses digits to
+  // underflow (as accurate as hypot, within an ulp, and much faster), hypot elsewhere
   static double dist(double ax, double ay, double bx, double by) {
-    return std::hypot(ax - bx, ay - by);
+    const double dx = ax - bx, dy = ay - by;
+    const double s = dx * dx + dy * dy;
+    if (s > 0x1p-900 && s < 0x1p900) return std::sqrt(s);
+    return std::hypot(dx, dy);
   }
 
   // Polyanya's heuristic: the least |r x| + |x t| over x in the interval
@@ -694,13 +725,17 @@ struct MeshPlanner {
 
   int search(double sx, double sy, double tx, double ty, std::vector<double>& out,
              MeshScratch& MS) const {
-    std::vector<Root> roots;
-    std::vector<Node> nodes;
+    std::vector<Root>& roots = MS.roots;
+    std::vector<Node>& nodes = MS.nodes;
+    roots.clear();
+    nodes.clear();
     using QE = std::pair<double, int>;
-    std::priority_queue<QE, std::vector<QE>, std::greater<QE>> pq;
+    std::vector<QE>& heap = MS.heap;
+    heap.clear();
     auto push = [&](const Node& N) {
       nodes.push_back(N);
-      pq.push({N.f, (int)nodes.size() - 1});
+      heap.push_back({N.f, (int)nodes.size() - 1});
+      std::push_heap(heap.begin(), heap.end(), std::greater<QE>());
       ++n_pushed;
     };
     auto push_final = [&](int root, double g) {
@@ -715,6 +750,7 @@ struct MeshPlanner {
       return V.restr * side(V.R, M.vx[V.v], M.vy[V.v], x, y) >= 0;
     };
     auto push_interval = [&](int root, int nb, int k, const Lim& L, const Lim& R) {
+      if (dead[nb] && !MS.tmark[nb]) return;
       Node N{};
       N.kind = 0;
       N.root = root;
@@ -795,7 +831,7 @@ struct MeshPlanner {
         }
       }
     };
-    std::vector<int> fan;
+    std::vector<int>& fan = MS.fan;
     // the start
     {
       int sv = -1;
@@ -810,9 +846,10 @@ struct MeshPlanner {
       }
       expand_point(0, MS.spolys, nullptr);
     }
-    while (!pq.empty()) {
-      const int id = pq.top().second;
-      pq.pop();
+    while (!heap.empty()) {
+      const int id = heap.front().second;
+      std::pop_heap(heap.begin(), heap.end(), std::greater<QE>());
+      heap.pop_back();
       const Node N = nodes[id];
       if (N.kind == 2) {
         std::vector<int> chain;
