@@ -354,3 +354,53 @@ def test_navmesh_cells_cover_the_free_space():
     assert math.isclose(sum(c.area for c in cells), free.area)
     assert mk.MotionPlanner(obs, method="visibility").navmesh is None
     assert Fraction(m.vertices[0][0]) == m.vertices[0][0]
+
+
+def _maze(n, seed):
+    rng = np.random.default_rng(seed)
+    occ = np.ones((2 * n + 1, 2 * n + 1), bool)
+    seen = np.zeros((n, n), bool)
+    stack = [(0, 0)]
+    seen[0, 0] = occ[1, 1] = False
+    seen[0, 0] = True
+    while stack:
+        i, j = stack[-1]
+        nb = [(i + a, j + b) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1))
+              if 0 <= i + a < n and 0 <= j + b < n and not seen[i + a, j + b]]  # fmt: skip
+        if not nb:
+            stack.pop()
+            continue
+        a, b = nb[int(rng.integers(len(nb)))]
+        seen[a, b] = True
+        occ[2 * a + 1, 2 * b + 1] = occ[i + a + 1, j + b + 1] = False
+        stack.append((a, b))
+    return occ
+
+
+@pytest.mark.parametrize("kind", ["maze", "cave"])
+def test_mesh_equals_visibility_on_game_maps(kind):
+    # dead ends (mazes) and pinches between diagonal blocks (caves): the mesh's lengths
+    # equal the visibility graph's (itself checked against the exact reference)
+    rng = np.random.default_rng(5)
+    if kind == "maze":
+        occ = _maze(7, 3)
+    else:
+        occ = rng.random((24, 24)) < 0.42
+    mesh = mk.MotionPlanner.from_grid(occ, method="mesh")
+    vis = mk.MotionPlanner.from_grid(occ, method="visibility")
+    h, w = occ.shape
+    pts = [
+        (int(x), int(y)) for x, y in zip(rng.integers(0, w + 1, 160), rng.integers(0, h + 1, 160))
+    ]
+    free = np.argwhere(~occ)
+    pts += [(c + 0.5, r + 0.5) for r, c in free[rng.integers(len(free), size=80)].tolist()]
+    for s, g in zip(pts[0::2], pts[1::2]):
+        try:
+            want = vis.shortest_path(s, g)
+        except GeometryError as exc:
+            with pytest.raises(type(exc)):
+                mesh.shortest_path(s, g)
+            continue
+        got = mesh.shortest_path(s, g)
+        assert math.isclose(got.length, want.length, rel_tol=1e-12), (s, g)
+        assert all(mesh._core.segment_free(*a, *b) for a, b in zip(got.points, got.points[1:]))
