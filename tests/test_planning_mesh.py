@@ -404,3 +404,19 @@ def test_mesh_equals_visibility_on_game_maps(kind):
         got = mesh.shortest_path(s, g)
         assert math.isclose(got.length, want.length, rel_tol=1e-12), (s, g)
         assert all(mesh._core.segment_free(*a, *b) for a, b in zip(got.points, got.points[1:]))
+
+
+def test_plot_and_polygons_show_the_mesh():
+    plt = pytest.importorskip("matplotlib.pyplot")
+    occ = np.zeros((4, 5), bool)
+    occ[1:3, 2] = True
+    pl = mk.MotionPlanner.from_grid(occ, method="mesh")
+    import shapely
+
+    cells = pl.navmesh.polygons()
+    inside = [c.intersection(shapely.box(0, 0, 5, 4)).area for c in cells]  # the grid
+    assert math.isclose(sum(inside), 4 * 5 - 2)  # (the mesh's box reaches beyond it)
+    ax = pl.plot(path=pl.shortest_path((0, 2), (5, 2)), mesh=True)
+    assert len(ax.lines) >= len(cells)
+    plt.close(ax.figure)
+    assert mk.MotionPlanner.from_grid(occ, method="visibility").navmesh is None

@@ -1350,6 +1350,21 @@ class NavMesh(NamedTuple):
     cells: list
     flags: np.ndarray
 
+    def polygons(self) -> Any:
+        """The cells as shapely Polygons (for display; shapely imported here).
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> pl = mk.MotionPlanner([[(1, 1), (2, 1), (2, 2), (1, 2)]], workspace=(0, 0, 3, 3),
+        ...                       method="mesh")
+        >>> sum(p.area for p in pl.navmesh.polygons())
+        8.0
+        """
+        import shapely
+
+        return [shapely.Polygon(self.vertices[c]) for c in self.cells]
+
 
 def _occupancy(occupancy: Any) -> np.ndarray:
     """An (H, W) bool array from an array-like of bools or numbers (nonzero: blocked)."""
