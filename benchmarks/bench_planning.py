@@ -271,7 +271,7 @@ def stats(name, label, n_obs, prep, times, paths, ref, check, qs):
         if not valid(check, p, s, g):
             bad += 1
             continue
-        if r is not None:
+        if r is not None and length(r) > 0:
             excess = max(excess, length(p) / length(r) - 1.0)
     n = len(qs)
     return (
@@ -291,7 +291,7 @@ def main() -> None:
     ap.add_argument("--peer-max-k", type=int, default=100, help="peers on random K up to this")
     ap.add_argument("--peer-max-maze", type=int, default=20, help="extremitypathfinder mazes")
     ap.add_argument(
-        "--vis-max", type=int, default=2000,
+        "--vis-max", type=int, default=4000,
         help="our visibility-graph row (a cross-check) up to this many C-pieces",
     )  # fmt: skip
     ap.add_argument("--seed", type=int, default=1)
