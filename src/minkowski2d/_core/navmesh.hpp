@@ -779,8 +779,12 @@ struct MeshPlanner {
     // a path from the root (rx, ry) may bend at vertex v: at a junction every way, at a
     // corner towards the obstacle there -- the side(s) of the line root-v that the
     // corner's boundary edges lie on (both when the line runs into the obstacle)
-    auto bend = [&](int v, int root, double rx, double ry, double g) {
+    // (V: the vertex node whose root this is -- its restriction must allow v; the length
+    // test first, the cheapest to fail: push_vertex would refuse the node the same way)
+    auto bend = [&](int v, int root, double rx, double ry, double g, const Node* V) {
       const double gv = g + dist(rx, ry, M.vx[v], M.vy[v]);
+      if (!(gv < MS.best[v])) return;
+      if (V && !allowed(*V, M.vx[v], M.vy[v])) return;
       if (M.vflag[v] & JUNCTION) {
         push_vertex(v, root, gv, 0, Lim{});
         return;
@@ -799,9 +803,8 @@ struct MeshPlanner {
         const int off = M.poff[Z], m = M.poff[Z + 1] - off;
         for (int i = 0; i < m; ++i) {  // the polygon's corners and junctions: in sight
           const int u = M.pv[off + i];
-          if (M.vflag[u] && u != roots[root].v && (!V || allowed(*V, M.vx[u], M.vy[u])) &&
-              !(M.vx[u] == rx && M.vy[u] == ry))
-            bend(u, root, rx, ry, g);
+          if (M.vflag[u] && u != roots[root].v && !(M.vx[u] == rx && M.vy[u] == ry))
+            bend(u, root, rx, ry, g, V);
         }
         for (int i = 0; i < m; ++i) {
           const int zi = M.pv[off + i], zj = M.pv[off + (i + 1) % m];
@@ -906,7 +909,7 @@ struct MeshPlanner {
       }
       // bends: corners at the ends of the interval's edge, junctions in the cone
       for (int j = 0; j < m; ++j)
-        if (M.vflag[c[j]] && L[j] <= 0 && R[j] >= 0) bend(c[j], rid, rx, ry, g);
+        if (M.vflag[c[j]] && L[j] <= 0 && R[j] >= 0) bend(c[j], rid, rx, ry, g, nullptr);
     }
     return 3;
   }
