@@ -693,3 +693,13 @@ def test_geoseries_and_object_array_input():
     gs = gpd.GeoSeries(list(geoms), index=[7, 9])
     pl = mk.MotionPlanner(gs, robot=ROBOT)
     assert pl.shortest_path((0, 0), (6, 0)).points.tolist()[1] == [1.0, -2.0]
+
+
+def test_locate_names_the_lowest_of_overlapping_obstacles():
+    # (0.5, 0.5) is inside both C-obstacles: the answer does not depend on the grid's order
+    L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    T = [(0, 0), (2, 0), (0, 1)]
+    for obs in ([L, T], [T, L], [T, L, T]):
+        pl = mk.MotionPlanner(obs)
+        got = pl.locate([(0.5, 0.5), (1.0, 0.25), (1.5, 0.5), (0.5, 1.5), (3, 3)]).tolist()
+        assert got == [0, 0, obs.index(L), obs.index(L), -1]

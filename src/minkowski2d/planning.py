@@ -1128,8 +1128,9 @@ class MotionPlanner:
         return self.locate(pts) == -1
 
     def locate(self, points: Any) -> np.ndarray:
-        """Per point: -1 free, ``k`` inside the C-obstacle of ``obstacles[k]``
-        (``n_obstacles`` for the workspace's outside), -2 outside the workspace box.
+        """Per point: -1 free, ``k`` inside the C-obstacle of ``obstacles[k]`` (the
+        lowest such ``k`` where C-obstacles overlap; ``n_obstacles`` for the workspace's
+        outside), -2 outside the workspace box.
 
         Examples
         --------

@@ -164,6 +164,15 @@ class Geo {
     // an unbounded (or NaN) bound: no information, every decision goes exact
     if (!(v.x.e <= 1e308) || !(v.x.v - v.x.v == 0)) v.x = FE{0, INFINITY};
     if (!(v.y.e <= 1e308) || !(v.y.v - v.y.v == 0)) v.y = FE{0, INFINITY};
+    // on a vertical (horizontal) line through points with double coordinates, the
+    // crossing's x (y) is exactly that double: crossings along one such line then compare
+    // equal in x without exact arithmetic (the sweep order meets them all; axis-parallel
+    // edges with many crossings are common in offsets and CAD parts)
+    for (i64 l : {l1, l2}) {
+      const P &p0 = pts[lines[l].a], &p1 = pts[lines[l].b];
+      if (p0.x.lo == 0 && p1.x.lo == 0 && p0.x.hi == p1.x.hi) v.x = FE{p0.x.hi, 0.0};
+      if (p0.y.lo == 0 && p1.y.lo == 0 && p0.y.hi == p1.y.hi) v.y = FE{p0.y.hi, 0.0};
+    }
     verts.push_back(v);
     return (i64)verts.size() - 1;
   }

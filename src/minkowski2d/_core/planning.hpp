@@ -264,6 +264,9 @@ struct Planner {
     i64 cya = celly((double)y - slack), cyb = celly((double)y + slack);
     (void)c;
     const std::uint32_t tk = S.next();
+    // several obstacles may overlap at x: the answer is the lowest group whose C-obstacle
+    // has x in its open interior (the same whatever the order of the grid's cells)
+    int best = -1;
     for (i64 r = cya; r <= cyb; ++r)
       for (i64 cc = cxa; cc <= cxb; ++cc) {
         i64 cell = r * nx + cc;
@@ -275,7 +278,10 @@ struct Planner {
           if (x < b[0] || x > b[2] || y < b[1] || y > b[3]) continue;
           i64 w = 0;
           int cl = classify(it, x, y, w);
-          if (cl == 3) return pgrp[it];
+          if (cl == 3) {  // strictly inside a piece: its group (the lowest such, below)
+            if (best < 0 || pgrp[it] < best) best = pgrp[it];
+            continue;
+          }
           if (cl == 0) continue;
           i64 lo = poff[it], hi = poff[it + 1];
           if (cl == 1) {
@@ -287,15 +293,16 @@ struct Planner {
           }
         }
       }
-    if (cones.size() < 2) return -1;
+    if (cones.size() < 2) return best;
     std::sort(cones.begin(), cones.end(), [](const Cone& a, const Cone& b) { return a.grp < b.grp; });
     for (std::size_t g0 = 0; g0 < cones.size();) {
       std::size_t g1 = g0;
       while (g1 < cones.size() && cones[g1].grp == cones[g0].grp) ++g1;
+      if (best >= 0 && cones[g0].grp >= best) break;
       if (g1 - g0 >= 2 && covers(x, y, cones.data() + g0, g1 - g0)) return cones[g0].grp;
       g0 = g1;
     }
-    return -1;
+    return best;
   }
 
   // do the closed cones cover every direction around x?
