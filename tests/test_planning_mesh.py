@@ -420,3 +420,15 @@ def test_plot_and_polygons_show_the_mesh():
     assert len(ax.lines) >= len(cells)
     plt.close(ax.figure)
     assert mk.MotionPlanner.from_grid(occ, method="visibility").navmesh is None
+
+
+def test_mesh_locate_names_the_lowest_of_overlapping_obstacles():
+    L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    T = [(0, 0), (2, 0), (0, 1)]
+    for obs in ([L, T], [T, L], [T, L, T]):
+        pl = mk.MotionPlanner(obs, method="mesh")
+        got = pl.locate([(0.5, 0.5), (1.0, 0.25), (1.5, 0.5), (0.5, 1.5), (3, 3)]).tolist()
+        assert got == [0, 0, obs.index(L), obs.index(L), -1]
+        with pytest.raises(GeometryError) as ei:
+            pl.shortest_path((1.5, 0.5), (3, 3))
+        assert ei.value.obstacle == obs.index(L)
