@@ -273,6 +273,19 @@ def test_convolution_limits(monkeypatch, limit, value):
     assert e.value.argument == "a, b" and e.value.hint
 
 
+def test_large_stars_convolution_is_refused_not_a_crash():
+    # two regular 2048-vertex stars: their convolution once ran the machine out of memory
+    # (the grid of candidate pairs registered every long segment in ~sqrt(n) cells); the
+    # decomposition computes the sum (benchmarks/bench_general.py)
+    k = np.arange(2048)
+    th = 2 * np.pi * k / 2048
+    rad = np.where(k % 2 == 0, 10000, 5000)
+    a = np.rint(np.c_[rad * np.cos(th), rad * np.sin(th)]).astype(np.int64)
+    with pytest.raises(ResourceLimitError, match="MAX_CONVOLUTION_SEGMENTS") as e:
+        mk.minkowski_sum_general(a, a, method="convolution")
+    assert e.value.argument == "a, b" and e.value.hint
+
+
 def test_point_in_a_collection_is_refused_not_dropped():
     # {p} ⊕ B has area: uniting the collection used to drop the point silently
     sq = [(0, 0), (1, 0), (1, 1), (0, 1)]

@@ -455,8 +455,9 @@ class _Prepared:
 #: ``MAX_PIECE_PAIRS`` convex piece sums (pieces of A times pieces of B) for the
 #: decomposition ...
 MAX_PIECE_PAIRS = 1 << 21
-#: ... ``MAX_CONVOLUTION_SEGMENTS`` segments of the convolution ...
-MAX_CONVOLUTION_SEGMENTS = 1 << 22
+#: ... ``MAX_CONVOLUTION_SEGMENTS`` segments of the convolution (about 800 bytes each
+#: with their crossings: two 2048-vertex stars have over 2 M and would need gigabytes) ...
+MAX_CONVOLUTION_SEGMENTS = 1 << 21
 #: ... and ``MAX_CROSSINGS`` crossings noded by the exact overlay, over all its runs
 #: (about 150 bytes each). The 2048-vertex stars of the benchmark need the decomposition;
 #: their convolution has 10**6 segments and far more crossings.

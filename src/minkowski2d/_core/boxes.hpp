@@ -186,6 +186,9 @@ inline bool box_pairs_grouped(i64 n, const double* xmin, const double* xmax,
 
 namespace mk {
 
+// At most this many cell registrations in segment_pairs (two i64 arrays of this size).
+constexpr i64 GRID_BUDGET = (i64)1 << 25;
+
 // Scratch of segment_pairs (reused: no allocation once grown).
 struct GridScratch {
   std::vector<i64> reg_start, reg_cell, cell_start, cell_edge, stamp;
@@ -238,6 +241,19 @@ inline bool segment_pairs(i64 n, const double* ax, const double* ay, const doubl
     double t = std::floor((y - Y0) * iy + DELTA);
     return t < 0 ? (i64)0 : (t >= (double)ny ? ny - 1 : (i64)t);
   };
+  // Memory: each segment is registered in the cells it crosses, about cols + rows of them.
+  // Long segments over a fine grid (a star's convolution: n segments across the whole
+  // sum) would need n * sqrt(n) registrations; beyond GRID_BUDGET the caller falls back
+  // to the box scan, whose memory is O(n) (its work is bounded by the caller's limits).
+  {
+    double est = 0;
+    for (i64 i = 0; i < n; ++i) {
+      const double rows = (double)(cy_hi(y1[i]) - cy_lo(y0[i]) + 1);
+      const double cols = (double)(cx_hi(x1[i]) - cx_lo(x0[i]) + 1);
+      est += std::min(rows * cols, cols + 3 * rows);
+      if (est > (double)GRID_BUDGET) return false;
+    }
+  }
   s.reg_start.assign(n + 1, 0);
   s.reg_cell.clear();
   for (i64 i = 0; i < n; ++i) {
