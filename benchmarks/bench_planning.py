@@ -1,24 +1,41 @@
-"""Motion planning: minkowski2d.MotionPlanner against extremitypathfinder and pyvisgraph.
+"""Motion planning at map scale: minkowski2d.MotionPlanner against extremitypathfinder and
+pyvisgraph.
 
-Seeded scenes of K convex obstacles (4-8 vertices, int coordinates) inside a square
-workspace, one per cell of a jittered grid (no two obstacles touch, which the peers
-require); a point robot, so every tool plans on the same free space. Q random free
-start/goal pairs per scene. One run; times are wall clock.
+Maps generated like game maps, seeded:
 
-Columns: preparation time; median query time; invalid paths (a segment meets an
-obstacle's open interior, or the endpoints are not the query's: checked with the exact
-predicates of the core); false "no path" (the tool reports none where a valid path
-exists); length over optimal (max relative excess over minkowski2d's exact shortest
-path, which tests/test_planning.py checks against a brute-force exact reference).
+* ``maze N``: a perfect maze of N x N cells (recursive backtracker) on a (2N+1)^2 grid of
+  unit blocks, walls one block thick (maze 64: 129 x 129 blocks);
+* ``cave N``: an N x N cave (random fill 45 %, four smoothing steps of the 4-5 cellular
+  automaton, border blocked);
+* ``random K``: K convex obstacles (4-8 vertices, int coordinates) inside a square
+  workspace, one per cell of a jittered grid (no two touch, which the peers require);
+* ``K checkerboard``: unit squares touching at their corners only (pinch points).
+
+Grids are planned with ``MotionPlanner.from_grid`` (blocked cells merged into rectangles,
+one obstacle: walls have no gaps between blocks). A point robot; Q random start/goal pairs
+on free cells (cell centres) or free points. Every time is measured as wall clock and as
+CPU time of this process (``time.process_time``): the machine may be shared, and CPU time
+is the figure that does not count other jobs. Preparation is the planner's constructor.
+
+Columns: preparation (wall / CPU; for minkowski2d the median of ``--prep-reps`` builds, the
+peers build once); median query (wall / CPU, one ``shortest_path`` call
+each, from Python); invalid paths (a segment meets a C-obstacle's open interior or leaves
+the workspace, or the endpoints are not the query's: checked with the exact predicates of
+the core); false "no path" (none reported where minkowski2d found a valid path); length
+over ours (largest relative excess over minkowski2d's path). The row ``minkowski2d
+(visibility)`` is the same planner on its exact visibility graph (``method="visibility"``,
+checked against a brute-force exact reference in tests/test_planning.py): its lengths
+cross-check the mesh's optimality on the maps where it finishes in reasonable time.
+
+Peers: extremitypathfinder and pyvisgraph on the random scenes up to ``--peer-max-k``
+(default 100: their preparation grows to minutes beyond); extremitypathfinder also on the
+mazes up to ``--peer-max-maze`` (the free space as one polygon; pyvisgraph takes no holes
+or touching obstacles and is skipped on grids).
 
 Usage::
 
-    python benchmarks/bench_planning.py                 # K = 10, 100, 1000 (peers to 100)
-    python benchmarks/bench_planning.py --ks 10 100 1000 10000 --peer-max-k 100
-
-Also a checkerboard scene (``--checker 50``): unit squares touching at their corners, so
-the free space is connected only through pinch points -- the closed free space makes those
-passages open, and the peers' handling of touching obstacles is what is measured there.
+    python benchmarks/bench_planning.py            # the table of docs/planning.md
+    python benchmarks/bench_planning.py --mazes 20 --caves --ks 100 --checker
 """
 
 from __future__ import annotations
@@ -104,66 +121,153 @@ def length(path: list) -> float:
     )
 
 
-def run_ours(obs, box, qs, threads=1):
-    t0 = time.perf_counter()
-    pl = mk.MotionPlanner(obs, workspace=box, threads=threads)
-    prep = time.perf_counter() - t0
-    times, paths = [], []
+def maze(n: int, seed: int) -> np.ndarray:
+    """A perfect maze of n x n cells on a (2n+1) x (2n+1) occupancy grid (True: wall)."""
+    rng = np.random.default_rng(seed)
+    occ = np.ones((2 * n + 1, 2 * n + 1), bool)
+    seen = np.zeros((n, n), bool)
+    stack = [(0, 0)]
+    seen[0, 0] = True
+    occ[1, 1] = False
+    while stack:
+        i, j = stack[-1]
+        nb = [
+            (i + di, j + dj)
+            for di, dj in ((1, 0), (-1, 0), (0, 1), (0, -1))
+            if 0 <= i + di < n and 0 <= j + dj < n and not seen[i + di, j + dj]
+        ]
+        if not nb:
+            stack.pop()
+            continue
+        a, b = nb[int(rng.integers(len(nb)))]
+        seen[a, b] = True
+        occ[2 * a + 1, 2 * b + 1] = False
+        occ[i + a + 1, j + b + 1] = False
+        stack.append((a, b))
+    return occ
+
+
+def cave(n: int, seed: int, fill: float = 0.45, steps: int = 4) -> np.ndarray:
+    """An n x n cave: random fill, then ``steps`` rounds of "blocked iff at least 5 of the
+    3 x 3 neighbourhood are" (outside the grid counts as blocked)."""
+    rng = np.random.default_rng(seed)
+    occ = rng.random((n, n)) < fill
+    for _ in range(steps):
+        pad = np.pad(occ, 1, constant_values=True).astype(np.int8)
+        cnt = sum(
+            pad[1 + dy : 1 + dy + n, 1 + dx : 1 + dx + n] for dy in (-1, 0, 1) for dx in (-1, 0, 1)
+        )
+        occ = cnt >= 5
+    return occ
+
+
+def grid_queries(occ: np.ndarray, Q: int, seed: int) -> list:
+    """Q pairs of free cell centres (x = column + 0.5, y = row + 0.5)."""
+    rng = np.random.default_rng(seed + 1)
+    free = np.argwhere(~occ)
+    idx = rng.integers(len(free), size=(Q, 2))
+    c = [(float(free[k][1]) + 0.5, float(free[k][0]) + 0.5) for k in idx.ravel()]
+    return list(zip(c[0::2], c[1::2]))
+
+
+def timed(fn, *args, **kwargs):
+    """(result, wall seconds, CPU seconds of this process)."""
+    w0, c0 = time.perf_counter(), time.process_time()
+    r = fn(*args, **kwargs)
+    return r, time.perf_counter() - w0, time.process_time() - c0
+
+
+def run_ours(make, qs, reps=1):
+    """Preparation: the median of ``reps`` builds (the first build in a process pays for
+    warming the allocator and the caches)."""
+    runs = [timed(make) for _ in range(reps)]
+    pl = runs[-1][0]
+    pw = statistics.median(r[1] for r in runs)
+    pc = statistics.median(r[2] for r in runs)
+    tw, tc, paths = [], [], []
     for s, g in qs:
-        t0 = time.perf_counter()
+        w0, c0 = time.perf_counter(), time.process_time()
         try:
             p = pl.shortest_path(s, g).points.tolist()
         except mk.errors.NoPathError:
             p = None
-        times.append(time.perf_counter() - t0)
+        tc.append(time.process_time() - c0)
+        tw.append(time.perf_counter() - w0)
         paths.append(p)
-    return pl, prep, times, paths
+    return pl, (pw, pc), (tw, tc), paths
 
 
-def run_epf(obs, box, qs):
+def run_epf(obs, box, qs, boundary=None):
     from extremitypathfinder import PolygonEnvironment
 
-    t0 = time.perf_counter()
-    env = PolygonEnvironment()
-    b = [(box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])]
-    holes = [[tuple(map(float, v)) for v in o[::-1]] for o in obs]  # clockwise
-    env.store([tuple(map(float, v)) for v in b], holes, validate=False)
-    env.prepare()
-    prep = time.perf_counter() - t0
-    times, paths = [], []
+    if boundary is None:
+        boundary = [(box[0], box[1]), (box[2], box[1]), (box[2], box[3]), (box[0], box[3])]
+        holes = [[tuple(map(float, v)) for v in o[::-1]] for o in obs]  # clockwise
+    else:
+        holes = obs
+
+    def prepare():
+        env = PolygonEnvironment()
+        env.store([tuple(map(float, v)) for v in boundary], holes, validate=False)
+        env.prepare()
+        return env
+
+    env, pw, pc = timed(prepare)
+    tw, tc, paths = [], [], []
     for s, g in qs:
-        t0 = time.perf_counter()
+        w0, c0 = time.perf_counter(), time.process_time()
         try:
             p, d = env.find_shortest_path(tuple(map(float, s)), tuple(map(float, g)))
             p = [list(v) for v in p] if p else None
         except Exception:  # noqa: BLE001 - the peer's own error: counted as no path
             p = None
-        times.append(time.perf_counter() - t0)
+        tc.append(time.process_time() - c0)
+        tw.append(time.perf_counter() - w0)
         paths.append(p)
-    return prep, times, paths
+    return (pw, pc), (tw, tc), paths
 
 
 def run_pvg(obs, box, qs):
     import pyvisgraph as vg
 
-    t0 = time.perf_counter()
-    g_ = vg.VisGraph()
-    g_.build([[vg.Point(float(x), float(y)) for x, y in o] for o in obs], workers=1, status=False)
-    prep = time.perf_counter() - t0
-    times, paths = [], []
+    def prepare():
+        g_ = vg.VisGraph()
+        pts = [[vg.Point(float(x), float(y)) for x, y in o] for o in obs]
+        g_.build(pts, workers=1, status=False)
+        return g_
+
+    g_, pw, pc = timed(prepare)
+    tw, tc, paths = [], [], []
     for s, g in qs:
-        t0 = time.perf_counter()
+        w0, c0 = time.perf_counter(), time.process_time()
         try:
             p = g_.shortest_path(vg.Point(*map(float, s)), vg.Point(*map(float, g)))
             p = [[q.x, q.y] for q in p] if p else None
         except Exception:  # noqa: BLE001
             p = None
-        times.append(time.perf_counter() - t0)
+        tc.append(time.process_time() - c0)
+        tw.append(time.perf_counter() - w0)
         paths.append(p)
-    return prep, times, paths
+    return (pw, pc), (tw, tc), paths
 
 
-def stats(name, K, prep, times, paths, ref, check, qs):
+def maze_free_polygon(occ: np.ndarray):
+    """The free space of a maze as (boundary counter-clockwise, holes clockwise), or None
+    when it is not one polygon."""
+    import shapely
+
+    free = np.argwhere(~occ)
+    cells = shapely.box(free[:, 1], free[:, 0], free[:, 1] + 1, free[:, 0] + 1)
+    u = shapely.union_all(cells).simplify(0)
+    if u.geom_type != "Polygon":
+        return None
+    u = shapely.geometry.polygon.orient(u, 1.0)
+    bnd = [tuple(map(float, c)) for c in u.exterior.coords[:-1]]
+    holes = [[tuple(map(float, c)) for c in r.coords[:-1]] for r in u.interiors]
+    return bnd, holes
+
+
+def stats(name, label, n_obs, prep, times, paths, ref, check, qs):
     bad = nopath = 0
     excess = 0.0
     for p, r, (s, g) in zip(paths, ref, qs):
@@ -173,61 +277,101 @@ def stats(name, K, prep, times, paths, ref, check, qs):
         if not valid(check, p, s, g):
             bad += 1
             continue
-        if r is not None:
+        if r is not None and length(r) > 0:
             excess = max(excess, length(p) / length(r) - 1.0)
     n = len(qs)
     return (
-        f"| {name} | {K} | {prep * 1e3:.1f} | {statistics.median(times) * 1e3:.3f} | "
-        f"{bad}/{n} | {nopath}/{n} | {excess:.2e} |"
+        f"| {name} | {label} | {n_obs} | {prep[0] * 1e3:.1f} / {prep[1] * 1e3:.1f} | "
+        f"{statistics.median(times[0]) * 1e3:.3f} / {statistics.median(times[1]) * 1e3:.3f} | "
+        f"{bad}/{n} | {nopath}/{n} | {excess:.1e} |"
     )
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ks", type=int, nargs="+", default=[10, 100, 1000])
-    ap.add_argument("--queries", type=int, default=50)
+    ap.add_argument("--mazes", type=int, nargs="*", default=[20, 64], help="maze sizes (cells)")
+    ap.add_argument("--caves", type=int, nargs="*", default=[256], help="cave sizes")
+    ap.add_argument("--ks", type=int, nargs="*", default=[100, 1000, 10000], help="random K")
+    ap.add_argument("--checker", type=int, nargs="*", default=[50], help="checkerboard K")
+    ap.add_argument("--queries", type=int, default=100)
+    ap.add_argument("--peer-max-k", type=int, default=100, help="peers on random K up to this")
+    ap.add_argument("--peer-max-maze", type=int, default=20, help="extremitypathfinder mazes")
     ap.add_argument(
-        "--checker", type=int, nargs="*", default=[50], help="checkerboard scenes (pinch points)"
-    )
-    ap.add_argument("--threads", type=int, nargs="*", default=[2], help="extra rows: threads=")
-    ap.add_argument("--threads-min-k", type=int, default=1000)
-    ap.add_argument("--peer-max-k", type=int, default=100, help="skip the peers beyond this K")
+        "--vis-max", type=int, default=4000,
+        help="our visibility-graph row (a cross-check) up to this many C-pieces",
+    )  # fmt: skip
+    ap.add_argument("--prep-reps", type=int, default=3, help="our builds per map (median)")
     ap.add_argument("--seed", type=int, default=1)
     args = ap.parse_args()
     print(
-        "| tool | K | preparation ms | median query ms | invalid paths | false no-path "
-        "| length over optimal |"
+        "| tool | map | obstacles | preparation ms (wall / CPU) | median query ms (wall / CPU) "
+        "| invalid paths | false no-path | length over ours |"
     )
-    print("|---|---|---|---|---|---|---|")
-    notes = []
-    runs = [("convex", K) for K in args.ks] + [("checker", K) for K in args.checker]
-    for kind, K in runs:
-        obs, box = (scene if kind == "convex" else checkerboard)(K, args.seed + K)
-        label = K if kind == "convex" else f"{K} checkerboard"
-        qs = queries(obs, box, args.queries, args.seed + K)
-        pl, prep, times, ours = run_ours(obs, box, qs)
-        check = pl._float_twin()._core.segment_free
-        print(stats("minkowski2d", label, prep, times, ours, ours, check, qs), flush=True)
-        for th in args.threads:
-            if th > 1 and K >= args.threads_min_k:
-                _, prep, times, paths = run_ours(obs, box, qs, th)
-                name = f"minkowski2d threads={th}"
-                print(stats(name, label, prep, times, paths, ours, check, qs), flush=True)
-        if K > args.peer_max_k:
-            notes.append(f"K={K}: peers skipped (minutes per scene)")
-            continue
-        for name, fn in (("extremitypathfinder", run_epf), ("pyvisgraph", run_pvg)):
+    print("|---|---|---|---|---|---|---|---|")
+    notes: list[str] = []
+    runs = (
+        [("maze", n) for n in args.mazes]
+        + [("cave", n) for n in args.caves]
+        + [("random", k) for k in args.ks]
+        + [("checker", k) for k in args.checker]
+    )
+    for kind, n in runs:
+        seed = args.seed + n
+        occ = None
+        if kind in ("maze", "cave"):
+            occ = maze(n, seed) if kind == "maze" else cave(n, seed)
+            qs = grid_queries(occ, args.queries, seed)
+            label = f"{kind} {n}" + (f" ({occ.shape[0]}²)" if kind == "maze" else "")
+            n_obs = f"{int(occ.sum())} blocked cells"
+
+            def make(method="auto", occ=occ):
+                return mk.MotionPlanner.from_grid(occ, method=method)
+        else:
+            obs, box = (scene if kind == "random" else checkerboard)(n, seed)
+            qs = queries(obs, box, args.queries, seed)
+            label = f"random {n}" if kind == "random" else f"checkerboard {n}"
+            n_obs = str(len(obs))
+
+            def make(method="auto", obs=obs, box=box):
+                return mk.MotionPlanner(obs, workspace=box, method=method)
+
+        pl, prep, times, ours = run_ours(make, qs, args.prep_reps)
+        core = pl._core if pl.planned_by == "mesh" else pl._float_twin()._core
+        check = core.segment_free
+        name = f"minkowski2d ({pl.planned_by})"
+        print(stats(name, label, n_obs, prep, times, ours, ours, check, qs), flush=True)
+        if pl.planned_by == "mesh":
+            if len(pl.pieces) <= args.vis_max:
+                _, prep, times, paths = run_ours(lambda: make("visibility"), qs, args.prep_reps)
+                row = stats("minkowski2d (visibility)", label, n_obs, prep, times, paths, ours,
+                            check, qs)  # fmt: skip
+                print(row, flush=True)
+            else:
+                notes.append(f"{label}: our visibility graph skipped ({len(pl.pieces)} C-pieces)")
+        peers = []
+        if kind == "maze" and n <= args.peer_max_maze:
+            poly = maze_free_polygon(occ)
+            if poly is not None:
+                peers = [("extremitypathfinder", run_epf, (poly[1], None, qs, poly[0]))]
+        elif kind in ("random", "checker") and n <= args.peer_max_k:
+            peers = [
+                ("extremitypathfinder", run_epf, (obs, box, qs)),
+                ("pyvisgraph", run_pvg, (obs, box, qs)),
+            ]
+        else:
+            notes.append(f"{label}: peers skipped (size cap)")
+        for pname, fn, fargs in peers:
             try:
-                prep, times, paths = fn(obs, box, qs)
+                prep, times, paths = fn(*fargs)
             except ImportError:
-                notes.append(f"{name} not installed")
+                notes.append(f"{pname} not installed")
                 continue
             except Exception as exc:  # noqa: BLE001 - a peer refusing the scene
-                notes.append(f"{name} failed on K={label}: {type(exc).__name__}: {exc}")
+                notes.append(f"{pname} failed on {label}: {type(exc).__name__}: {exc}")
                 continue
-            print(stats(name, label, prep, times, paths, ours, check, qs), flush=True)
-    for n in notes:
-        print(f"note: {n}")
+            print(stats(pname, label, n_obs, prep, times, paths, ours, check, qs), flush=True)
+    for note in notes:
+        print(f"note: {note}")
 
 
 if __name__ == "__main__":

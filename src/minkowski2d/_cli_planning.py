@@ -22,12 +22,18 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         help="shortest path of a translating robot among polygonal obstacles",
         description="Exact shortest path of the robot's reference point from --start to "
         "--goal. SCENE is a JSON object {obstacles, robot, workspace} or a GeoJSON "
-        "FeatureCollection with a 'role' property per feature (see docs/planning.md). "
+        "FeatureCollection with a 'role' property per feature (see docs/planning.md), or a "
+        "grid map in the Moving AI .map format (cell (x, y) is [x, x+1] x [y, y+1]). "
         "Write negative coordinates as --start=-1,2.",
     )
-    p.add_argument("scene", help="scene file (JSON or GeoJSON, or - for standard input)")
+    p.add_argument("scene", help="scene file (JSON, GeoJSON or a .map grid; - for standard input)")
     p.add_argument("--start", required=True, help="start position x,y")
     p.add_argument("--goal", required=True, help="goal position x,y")
+    p.add_argument(
+        "--robot",
+        help="plan for this robot instead of the scene's: a JSON point list such as "
+        "'[[0,0],[1,0],[0,1]]' (its reference point is the origin)",
+    )
     p.add_argument("-o", "--output", help="output file (default: standard output)")
     p.add_argument(
         "--format",
@@ -64,6 +70,36 @@ def _xy(text: str, name: str) -> tuple[Any, Any]:
     return (x, y)
 
 
+def _is_map(source: str) -> bool:
+    """A Moving AI grid map: by its suffix, or (standard input aside) its first line."""
+    if source.lower().endswith(".map"):
+        return True
+    if source == "-":
+        return False
+    try:
+        with open(source, encoding="utf-8", errors="replace") as fh:
+            first = fh.readline()
+    except OSError:
+        return False
+    return first.split()[:1] == ["type"]
+
+
+def _robot(text: str | None) -> Any:
+    if text is None:
+        return None
+    from ._foreign import foreign_errors
+    from .errors import InputFormatError
+    from .io import parse_geometry
+
+    try:
+        with foreign_errors("--robot", "reading the robot"):
+            return parse_geometry(text, "--robot")
+    except InputFormatError as exc:
+        raise exc.renamed(
+            hint="give the robot as a JSON point list, e.g. [[0,0],[1,0],[0,1]]"
+        ) from None
+
+
 def _read_scene(source: str) -> Any:
     from ._engine.foreign import foreign_errors
     from .errors import InputFormatError
@@ -92,17 +128,24 @@ def _cmd_plan(args: argparse.Namespace) -> int:
         fmt = {"svg": "svg", "geojson": "geojson"}.get(suffix, "json")
     start = _xy(args.start, "start")
     goal = _xy(args.goal, "goal")
-    scene = _read_scene(args.scene)
+    robot = _robot(args.robot)
+    if _is_map(args.scene):
+        from .io import read_grid_map
+
+        scene: Any = None
+        planner = MotionPlanner.from_grid(read_grid_map(args.scene))
+    else:
+        scene = _read_scene(args.scene)
+        try:
+            planner = MotionPlanner.from_scene(scene, name=args.scene)
+        except GeometryError as exc:
+            if exc.argument and exc.argument != args.scene:
+                raise exc.renamed(f"{args.scene}: {exc.argument}") from None
+            raise
     try:
-        planner = MotionPlanner.from_scene(scene, name=args.scene)
+        path = planner.shortest_path(start, goal, robot=robot)
     except GeometryError as exc:
-        if exc.argument and exc.argument != args.scene:
-            raise exc.renamed(f"{args.scene}: {exc.argument}") from None
-        raise
-    try:
-        path = planner.shortest_path(start, goal)
-    except GeometryError as exc:
-        if exc.argument in ("start", "goal"):
+        if exc.argument in ("start", "goal", "robot"):
             raise exc.renamed(f"--{exc.argument}") from None
         raise
     if fmt == "json":

@@ -32,8 +32,9 @@ Examples
 from __future__ import annotations
 
 import math
+from collections import OrderedDict
 from fractions import Fraction
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -46,15 +47,20 @@ from .errors import (
     GeometryError,
     NonFiniteError,
     NoPathError,
+    OptionError,
     OverflowGeometryError,
     ShapeError,
 )
 
-__all__ = ["MotionPlanner", "Path"]
+__all__ = ["MotionPlanner", "Path", "NavMesh"]
 
 _NOT_CONVEX = (D.Status.TURNS_BOTH_WAYS, D.Status.SPIKE, D.Status.WINDS_TWICE)
 _F53 = 1 << 53
 _INT_LIMIT = int(_ext.INT_LIMIT)
+METHODS = ("auto", "mesh", "visibility")
+_MESH_MIN_PIECES = 64  # "auto": smaller scenes keep the visibility graph (as fast there)
+_MESH_RANGE = 2.0**500
+_ROBOT_CACHE = 8  # planners kept for other robots (least recently used dropped)
 
 
 # --------------------------------------------------------------------------------------
@@ -337,9 +343,16 @@ class MotionPlanner:
     """
 
     def __init__(
-        self, obstacles: Any, robot: Any = None, *, workspace: Any = None, threads: int = 1
+        self,
+        obstacles: Any,
+        robot: Any = None,
+        *,
+        workspace: Any = None,
+        threads: int = 1,
+        method: str = "auto",
     ) -> None:
         self.threads = _options.threads(threads)
+        self.method = _options.choice(method, "method", METHODS)
         obs = self._read_obstacles(obstacles)
         kinds = set()
         opieces: list[list[np.ndarray]] = []
@@ -348,6 +361,17 @@ class MotionPlanner:
                 pcs, kind = _pieces(o, f"obstacles[{k}]")
             opieces.append(pcs)
             kinds.add(kind)
+        self._obstacles = obs
+        self._setup(opieces, kinds, robot, workspace)
+
+    def _setup(self, opieces: list, okinds: set, robot: Any, workspace: Any) -> None:
+        """Everything after the obstacles' pieces: the robot, the workspace, the
+        C-obstacle pieces and the core (shared by the constructor, :meth:`from_grid` and
+        the planners for other robots)."""
+        self._raw = (opieces, set(okinds), workspace)
+        self._robots: OrderedDict = OrderedDict()
+        kinds = set(okinds)
+        obs = self._obstacles
         if robot is None:
             rpieces, rkind = [np.zeros((1, 2), np.int64)], "int"
         else:
@@ -392,7 +416,6 @@ class MotionPlanner:
         opieces = [_as_kind(p, kind, f"obstacles[{k}]") for k, p in enumerate(opieces)]
         rpieces = _as_kind(rpieces, kind, "robot")
         wpieces = _as_kind(wpieces, kind, "workspace")
-        self._obstacles = obs
         self._robot_pieces = rpieces
         self._obstacle_pieces = opieces
         self.n_obstacles = len(obs)
@@ -625,6 +648,89 @@ class MotionPlanner:
         return pieces
 
     def _make_core(self, kind: str) -> Any:
+        self._mesh_box: Any = None
+        if self.method != "visibility":
+            core = self._make_mesh(kind)
+            if core is not None:
+                return core
+        return self._make_graph(kind)
+
+    def _solid(self, dt: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The pieces with area (points and segments block nothing), their offsets and
+        groups, as the cores take them."""
+        coords = self.pieces.coords
+        offs = self.pieces.offsets
+        n = np.diff(offs)
+        solid = n >= 3
+        keep = np.repeat(solid, n)
+        c = np.ascontiguousarray(coords[keep], dt)
+        o = np.concatenate([[0], np.cumsum(n[solid])]).astype(np.int64)
+        g = np.ascontiguousarray(self.groups[solid], np.int64)
+        return c, o, g
+
+    def _make_mesh(self, kind: str, cover: Any = None) -> Any:
+        """The navigation-mesh core, or None where the visibility graph must plan (with
+        ``method="mesh"``: an OptionError saying why)."""
+        why = self._mesh_refused(kind)
+        c = o = g = None
+        if why is None:
+            c, o, g = self._solid(np.float64)
+            if self.method == "auto" and len(o) - 1 < _MESH_MIN_PIECES:
+                return None
+            box = self.box
+            if box is not None:
+                mb = [float(v) for v in box]
+            else:
+                pts = c if cover is None else np.concatenate([c, np.asarray(cover, np.float64)])
+                if len(pts) == 0:
+                    pts = np.zeros((1, 2))
+                lo, hi = pts.min(axis=0), pts.max(axis=0)
+                m = max(float((hi - lo).max()), 1.0)
+                mb = [float(lo[0]) - m, float(lo[1]) - m, float(hi[0]) + m, float(hi[1]) + m]
+                if not all(math.isfinite(v) and abs(v) < _MESH_RANGE for v in mb):
+                    why = "the scene's magnitude is beyond the mesh's range (2**500)"
+        if why is None:
+            core = _ext.MeshPlannerF()
+            st = core.build(
+                c,
+                o,
+                g,
+                np.asarray(self.box if self.box is not None else [], dtype=np.float64),
+                self._frame is not None,
+                np.asarray(mb, dtype=np.float64),
+            )
+            if st == _ext.MESH_OK:
+                self._mesh_box = mb
+                return core
+            why = {
+                _ext.MESH_INEXACT: "a crossing of two C-obstacle edges on the free space's "
+                "boundary is not a float64 value",
+                _ext.MESH_ZERO_WIDTH: "the free space has zero-width passages (obstacles, or "
+                "an obstacle and the workspace box, touching along an edge)",
+            }.get(st, "the mesh could not be built")
+        if self.method == "mesh":
+            raise OptionError(
+                f"method: 'mesh' cannot plan this scene: {why}",
+                argument="method",
+                allowed="'auto' or 'visibility' for this scene",
+                hint="use method='auto' (it falls back to the visibility graph)",
+            )
+        return None
+
+    def _mesh_refused(self, kind: str) -> str | None:
+        """Why the mesh cannot take these numbers (None: it can)."""
+        coords = self.pieces.coords
+        vals = [np.abs(coords).max()] if coords.size else []
+        if self.box is not None:
+            vals += [abs(v) for v in self.box]
+        big = max((float(v) for v in vals), default=0.0)
+        if kind == "int" and big > _F53:
+            return "int coordinates beyond 2**53"
+        if big >= _MESH_RANGE:
+            return "coordinates beyond 2**500"
+        return None
+
+    def _make_graph(self, kind: str) -> Any:
         coords = self.pieces.coords
         offs = self.pieces.offsets
         n = np.diff(offs)
@@ -663,6 +769,128 @@ class MotionPlanner:
             self._twin = twin
         return self._twin
 
+    # ------------------------------------------------------------------ other robots
+    def _for_robot(self, robot: Any) -> MotionPlanner:
+        """The planner for ``robot`` on the same obstacles, workspace and options (built
+        once; the last ``_ROBOT_CACHE`` are kept, least recently used dropped)."""
+        with foreign_errors("robot", "triangulating the polygon", magnitude=True):
+            pieces, kind = _pieces(robot, "robot")
+        key = (kind, tuple((p.dtype.str, p.shape, p.tobytes()) for p in pieces))
+        pl = self._robots.get(key)
+        if pl is not None:
+            self._robots.move_to_end(key)
+            return pl
+        pl = object.__new__(type(self))
+        pl.threads = self.threads
+        pl.method = self.method
+        pl._obstacles = self._obstacles
+        pl._grid_box = self._grid_box
+        opieces, okinds, workspace = self._raw
+        pl._setup(opieces, okinds, robot, workspace)
+        self._robots[key] = pl
+        while len(self._robots) > _ROBOT_CACHE:
+            self._robots.popitem(last=False)
+        return pl
+
+    # ------------------------------------------------------------------ grids
+    _grid_box: Any = None
+
+    @classmethod
+    def from_grid(
+        cls,
+        occupancy: Any,
+        *,
+        cell_size: Any = 1,
+        origin: Any = (0, 0),
+        robot: Any = None,
+        threads: int = 1,
+        method: str = "auto",
+    ) -> MotionPlanner:
+        """A planner on an occupancy grid: ``occupancy[r, c]`` true where the cell is
+        blocked.
+
+        Cell ``(r, c)`` is the square ``[x0 + c s, x0 + (c + 1) s] × [y0 + r s,
+        y0 + (r + 1) s]`` with ``(x0, y0) = origin`` and ``s = cell_size``: column is x,
+        row is y, as in the Moving AI benchmarks' coordinates
+        (:func:`minkowski2d.io.read_grid_map`). The blocked cells are merged into
+        rectangles and, with the grid's outside, form one obstacle (``obstacles[0]``):
+        the seams between cells block, so no path slips between two blocked cells that
+        share an edge or along the grid's border; a path may pass where two blocked cells
+        touch only at a corner (the free space is closed). The whole robot stays inside
+        the grid; a point outside it is "outside the workspace".
+
+        Parameters
+        ----------
+        occupancy : (H, W) array-like of bool
+            True (or nonzero) for a blocked cell.
+        cell_size : int or float, default 1
+            Side of a cell (> 0). Ints (with an int origin) keep the planning exact in
+            int64.
+        origin : (x, y), default (0, 0)
+            The corner of cell (0, 0).
+        robot, threads, method
+            As for :class:`MotionPlanner`.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import minkowski2d as mk
+        >>> grid = np.array([[0, 0, 0, 0],
+        ...                  [0, 1, 1, 0],
+        ...                  [0, 0, 0, 0]], dtype=bool)
+        >>> pl = mk.MotionPlanner.from_grid(grid)
+        >>> pl.shortest_path((0, 0), (4, 2)).points.tolist()
+        [[0, 0], [3, 1], [4, 2]]
+        """
+        occ = _occupancy(occupancy)
+        s = _grid_scalar(cell_size, "cell_size")
+        o = _point(origin, "origin")
+        if not s > 0:
+            raise OptionError(
+                f"cell_size: must be > 0, got {_fmt(s)}", argument="cell_size", allowed="> 0"
+            )
+        H, W = occ.shape
+        floats = any(isinstance(v, float) for v in (s, *o))
+        xs = [o[0] + c * s for c in range(W + 1)]
+        ys = [o[1] + r * s for r in range(H + 1)]
+        if floats:
+            xs, ys = [float(v) for v in xs], [float(v) for v in ys]
+        x0, y0, x1, y1 = xs[0], ys[0], xs[-1], ys[-1]
+        bx0, by0, bx1, by1 = x0 - s, y0 - s, x1 + s, y1 + s
+        if floats and not all(math.isfinite(v) for v in (bx0, by0, bx1, by1)):
+            raise OverflowGeometryError(
+                "cell_size: the grid's extent overflows float64", argument="cell_size"
+            )
+        rects = [(xs[c0], ys[r0], xs[c1], ys[r1]) for r0, c0, r1, c1 in _grid_rectangles(occ)]
+        rects += [(bx0, by0, x0, by1), (x1, by0, bx1, by1), (x0, by0, x1, y0), (x0, y1, x1, by1)]
+        dt = np.float64 if floats else np.int64
+        if not floats and max(abs(v) for v in (bx0, by0, bx1, by1)) >= _INT_LIMIT:
+            raise ShapeError(
+                "cell_size: the grid's coordinates reach 2**62",
+                argument="cell_size",
+                hint="use a smaller cell_size or origin",
+            )
+        pieces = [np.array([[a, b], [c, b], [c, d], [a, d]], dtype=dt) for a, b, c, d in rects]
+        pl = object.__new__(cls)
+        pl.threads = _options.threads(threads)
+        pl.method = _options.choice(method, "method", METHODS)
+        pl._obstacles = [occ]
+        pl._grid_box = (x0, y0, x1, y1)
+        pl._setup([pieces], {"float" if floats else "int"}, robot, None)
+        return pl
+
+    def _in_grid(self, pts: list[tuple]) -> np.ndarray:
+        b = self._grid_box
+        return np.array([b[0] <= p[0] <= b[2] and b[1] <= p[1] <= b[3] for p in pts], dtype=bool)
+
+    def _check_grid(self, pts: list[tuple], names: list[str]) -> None:
+        """A grid planner's queries must lie on the grid."""
+        if self._grid_box is None:
+            return
+        for p, ok, name in zip(pts, self._in_grid(pts), names):
+            if not ok:
+                raise self._point_error(name, p, -2)
+
     # ------------------------------------------------------------------ naming
     def _group_name(self, g: int) -> str:
         return f"obstacles[{g}]" if g < self.n_obstacles else "workspace"
@@ -687,9 +915,30 @@ class MotionPlanner:
         return e
 
     # ------------------------------------------------------------------ queries
+    def _graph_twin(self) -> Any:
+        """The same planner on the visibility graph (for int queries beyond 2**53 on a
+        meshed int scene: the mesh works on float64)."""
+        if getattr(self, "_graph", None) is None:
+            twin = object.__new__(MotionPlanner)
+            twin.__dict__.update(self.__dict__)
+            twin._twin = None
+            twin._mesh_box = None
+            twin._core = twin._make_graph(self.kind)
+            self._graph = twin
+        return self._graph
+
     def _route(self, pts: list[tuple]) -> tuple[Any, str]:
         """The core that takes these points exactly, and the output kind."""
         floats = any(isinstance(v, float) for p in pts for v in p)
+        if self._mesh_box is not None:
+            if any(isinstance(v, int) and abs(v) > _F53 for p in pts for v in p):
+                if self.kind == "int" and not floats:
+                    return self._graph_twin()._route(pts)
+                raise ShapeError(
+                    "start: ints beyond 2**53 next to floats cannot be converted exactly",
+                    argument="start",
+                )
+            return self, "int" if self.kind == "int" and not floats else "float"
         if self.kind == "int" and not floats:
             if any(abs(v) >= _INT_LIMIT for p in pts for v in p):
                 raise ShapeError(
@@ -708,13 +957,17 @@ class MotionPlanner:
             )
         return self, "float"
 
-    def shortest_path(self, start: Any, goal: Any) -> Path:
+    def shortest_path(self, start: Any, goal: Any, *, robot: Any = None) -> Path:
         """The shortest valid path of the reference point from ``start`` to ``goal``.
 
         Parameters
         ----------
         start, goal : (x, y)
             Reference-point positions (ints, floats, or shapely Points).
+        robot : polygon, optional
+            Plan for this robot instead of the planner's own (``[(0, 0)]`` for a point).
+            The answer is that of ``MotionPlanner(obstacles, robot, workspace=...)`` with
+            the same options; the preparations for the last eight robots are kept.
 
         Returns
         -------
@@ -736,12 +989,18 @@ class MotionPlanner:
         >>> walls = [[(-1, 1), (3, 1), (3, 2), (-1, 2)], [(-1, -1), (3, -1), (3, 1), (-1, 1)]]
         >>> mk.MotionPlanner(walls).shortest_path((-2, 1), (4, 1)).points.tolist()
         [[-2, 1], [4, 1]]
+        >>> square = [(0, 0), (1, 0), (1, 1), (0, 1)]
+        >>> mk.MotionPlanner(walls).shortest_path((-3, 1), (4, 1), robot=square).points.tolist()
+        [[-3, 1], [-2, 2], [3, 2], [4, 1]]
         """
+        if robot is not None:
+            return self._for_robot(robot).shortest_path(start, goal)
         s = _point(start, "start")
         g = _point(goal, "goal")
+        self._check_grid([s, g], ["start", "goal"])
         pl, out = self._route([s, g])
-        dt = np.int64 if out == "int" else np.float64
-        st, grp, pts = pl._core.query(dt(s[0]), dt(s[1]), dt(g[0]), dt(g[1]))
+        st, grp, pts, _ = pl._query(np.array([s], dtype=object), np.array([g], dtype=object), out)
+        st, grp, pts = int(st[0]), int(grp[0]), pts
         if st == 1:
             raise self._point_error("start", s, grp)
         if st == 2:
@@ -755,12 +1014,48 @@ class MotionPlanner:
             )
         return Path(pts)
 
-    def shortest_paths(self, starts: Any, goals: Any) -> list[Path | None]:
+    def _query(self, S: Any, G: Any, out: str) -> tuple:
+        """The core's answers for the pairs (S[i], G[i]): status, group, points, offsets.
+        A meshed scene takes float64; a query outside the meshed box meshes a larger box
+        (once, kept)."""
+        if self._mesh_box is None:
+            dt = np.int64 if out == "int" else np.float64
+            A = np.ascontiguousarray(np.array(S, dtype=dt).reshape(-1, 2))
+            B = np.ascontiguousarray(np.array(G, dtype=dt).reshape(-1, 2))
+            if len(A) == 1:
+                st, grp, pts = self._core.query(dt(A[0, 0]), dt(A[0, 1]), dt(B[0, 0]), dt(B[0, 1]))
+                return [st], [grp], pts, [0, len(pts)]
+            return self._core.query_many(A, B)
+        A = np.ascontiguousarray(np.array(S, dtype=np.float64).reshape(-1, 2))
+        B = np.ascontiguousarray(np.array(G, dtype=np.float64).reshape(-1, 2))
+        if len(A) == 1:
+            st, grp, pts = self._core.query(A[0, 0], A[0, 1], B[0, 0], B[0, 1])
+            res: tuple = ([st], [grp], pts, [0, len(pts)])
+        else:
+            res = self._core.query_many(A, B)
+        if any(int(v) == 4 for v in res[0]):  # outside the meshed box
+            self._core = self._make_mesh("float", cover=np.concatenate([A, B]))
+            if self._core is None:
+                self._core = self._make_graph(self.kind)
+                self._twin = None
+                pl, out2 = self._route([tuple(p) for p in np.concatenate([A, B]).tolist()])
+                return pl._query(S, G, out2)
+            return self._query(S, G, out)
+        if out == "int":
+            pts = res[2]
+            ints = pts.astype(np.int64)
+            if not np.array_equal(ints, pts):  # bend points are C-obstacle vertices
+                raise GeometryError("internal error: a bend point is not an integer")
+            res = (res[0], res[1], ints, res[3])
+        return res
+
+    def shortest_paths(self, starts: Any, goals: Any, *, robot: Any = None) -> list[Path | None]:
         """Many queries in one call: ``starts[i]`` to ``goals[i]``.
 
         Either argument may be a single point (used for every query). Returns a list of
         :class:`Path`, with ``None`` where the goal is unreachable; a start or goal in
-        collision raises (the error names ``starts[i]`` or ``goals[i]``).
+        collision raises (the error names ``starts[i]`` or ``goals[i]``). ``robot``: as
+        in :meth:`shortest_path`.
 
         Examples
         --------
@@ -769,6 +1064,8 @@ class MotionPlanner:
         >>> [p.points.tolist() for p in pl.shortest_paths([(0, 0), (0, 5)], (3, 0))]
         [[[0, 0], [1, -1], [2, -1], [3, 0]], [[0, 5], [3, 0]]]
         """
+        if robot is not None:
+            return self._for_robot(robot).shortest_paths(starts, goals)
         S = self._points(starts, "starts")
         G = self._points(goals, "goals")
         if len(S) == 1 and len(G) != 1:
@@ -779,12 +1076,11 @@ class MotionPlanner:
             raise ShapeError(f"goals: {len(G)} goals for {len(S)} starts", argument="goals")
         if not S:
             return []
-        pl, out = self._route(S + G)
-        dt = np.int64 if out == "int" else np.float64
-        st, grp, pts, off = pl._core.query_many(
-            np.ascontiguousarray(np.array(S, dtype=dt).reshape(-1, 2)),
-            np.ascontiguousarray(np.array(G, dtype=dt).reshape(-1, 2)),
+        self._check_grid(
+            S + G, [f"starts[{i}]" for i in range(len(S))] + [f"goals[{i}]" for i in range(len(G))]
         )
+        pl, out = self._route(S + G)
+        st, grp, pts, off = pl._query(S, G, out)
         res: list[Path | None] = []
         for i in range(len(S)):
             if st[i] == 1:
@@ -829,10 +1125,7 @@ class MotionPlanner:
         pts = self._points(points, "points")
         if not pts:
             return np.zeros(0, bool)
-        pl, out = self._route(pts)
-        dt = np.int64 if out == "int" else np.float64
-        loc = pl._core.locate(np.ascontiguousarray(np.array(pts, dtype=dt).reshape(-1, 2)))
-        return loc == -1
+        return self.locate(pts) == -1
 
     def locate(self, points: Any) -> np.ndarray:
         """Per point: -1 free, ``k`` inside the C-obstacle of ``obstacles[k]`` (the
@@ -845,11 +1138,15 @@ class MotionPlanner:
         >>> mk.MotionPlanner([[(0, 0), (2, 0), (2, 2), (0, 2)]]).locate([(1, 1), (3, 3)]).tolist()
         [0, -1]
         """
-        pts = self._points(points, "points")
+        pts = points if isinstance(points, list) else self._points(points, "points")
+        if not pts:
+            return np.zeros(0, np.int64)
         pl, out = self._route(pts)
-        dt = np.int64 if out == "int" else np.float64
+        dt = np.int64 if out == "int" and pl._mesh_box is None else np.float64
         loc = pl._core.locate(np.ascontiguousarray(np.array(pts, dtype=dt).reshape(-1, 2)))
         loc = np.asarray(loc, dtype=np.int64)
+        if self._grid_box is not None:
+            loc[~self._in_grid(pts)] = -2
         return np.minimum(loc, self.n_obstacles)  # every workspace group is the workspace
 
     # ------------------------------------------------------------------ geometry
@@ -897,11 +1194,12 @@ class MotionPlanner:
         return [_union_shapes(pcs) for pcs in self._obstacle_pieces]
 
     def _plot_(self, ax: Any, path: Path | None = None, **kwargs: Any) -> Any:
-        return self.plot(ax, path=path)
+        return self.plot(ax, path=path, mesh=bool(kwargs.get("mesh", False)))
 
-    def plot(self, ax: Any = None, path: Path | None = None) -> Any:
+    def plot(self, ax: Any = None, path: Path | None = None, *, mesh: bool = False) -> Any:
         """Draw the obstacles, the C-obstacles and optionally a path with matplotlib
-        (imported only here); returns the axes.
+        (imported only here); returns the axes. ``mesh=True`` also draws the cells of
+        the navigation mesh (when the mesh plans).
 
         Examples
         --------
@@ -925,14 +1223,48 @@ class MotionPlanner:
         if self.box is not None:
             b = [float(v) for v in self.box]
             ax.plot([b[0], b[2], b[2], b[0], b[0]], [b[1], b[1], b[3], b[3], b[1]], "k--", lw=1)
+        m = self.navmesh if mesh else None
+        if m is not None:
+            for cell in m.cells:
+                xy = m.vertices[np.append(cell, cell[0])]
+                ax.plot(xy[:, 0], xy[:, 1], color="#6a9fd8", lw=0.5)
         if path is not None:
             path.plot(ax)
         return ax
 
+    @property
+    def planned_by(self) -> str:
+        """``"mesh"`` (the navigation mesh and its interval search) or ``"visibility"``
+        (the reduced visibility graph): which of the two answers this planner's queries
+        (``method="auto"`` picks the mesh for scenes of 64 or more C-obstacle pieces
+        where it can be built)."""
+        return "mesh" if self._mesh_box is not None else "visibility"
+
+    @property
+    def navmesh(self) -> NavMesh | None:
+        """The navigation mesh of the free space (None when the visibility graph plans):
+        exact vertices and convex cells, counter-clockwise; ``flags`` marks corners (1,
+        the free angle exceeds 180 degrees) and junctions (2, the free space pinches).
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> pl = mk.MotionPlanner([[(1, 1), (2, 1), (2, 2), (1, 2)]], workspace=(0, 0, 3, 3),
+        ...                       method="mesh")
+        >>> m = pl.navmesh
+        >>> len(m.vertices), sum(len(c) for c in m.cells) >= 3 * 4
+        (8, True)
+        """
+        if self._mesh_box is None:
+            return None
+        xy, off, pv, fl = self._core.mesh()
+        cells = [pv[off[k] : off[k + 1]] for k in range(len(off) - 1)]
+        return NavMesh(xy, cells, fl)
+
     def __repr__(self) -> str:
         return (
             f"MotionPlanner({self.n_obstacles} obstacles, {len(self.pieces)} C-pieces, "
-            f"{len(self._core.candidates())} bend candidates, kind={self.kind!r})"
+            f"kind={self.kind!r}, method={self.planned_by!r})"
         )
 
 
@@ -999,3 +1331,94 @@ def _ring_coords(workspace: Any) -> np.ndarray:
     if path == "py":
         raise ShapeError("workspace: coordinates must be int64 or float64", argument="workspace")
     return np.asarray(data, dtype=np.float64)
+
+
+class NavMesh(NamedTuple):
+    """The navigation mesh of a planner's free space (:attr:`MotionPlanner.navmesh`).
+
+    Attributes
+    ----------
+    vertices : (n, 2) float64 ndarray
+        Exact vertices (every one a double: piece vertices and crossings that are).
+    cells : list of (k,) int64 ndarrays
+        Convex cells, counter-clockwise, as indices into ``vertices``.
+    flags : (n,) int64 ndarray
+        1 for a corner (the free angle exceeds 180 degrees), 2 for a junction (the
+        free space pinches there), else 0.
+    """
+
+    vertices: np.ndarray
+    cells: list
+    flags: np.ndarray
+
+    def polygons(self) -> Any:
+        """The cells as shapely Polygons (for display; shapely imported here).
+
+        Examples
+        --------
+        >>> import minkowski2d as mk
+        >>> pl = mk.MotionPlanner([[(1, 1), (2, 1), (2, 2), (1, 2)]], workspace=(0, 0, 3, 3),
+        ...                       method="mesh")
+        >>> sum(p.area for p in pl.navmesh.polygons())
+        8.0
+        """
+        import shapely
+
+        return [shapely.Polygon(self.vertices[c]) for c in self.cells]
+
+
+def _occupancy(occupancy: Any) -> np.ndarray:
+    """An (H, W) bool array from an array-like of bools or numbers (nonzero: blocked)."""
+    try:
+        a = np.asarray(occupancy)
+    except Exception:  # noqa: BLE001 - foreign errors become ours
+        raise ShapeError(
+            "occupancy: expected an (H, W) array of bool", argument="occupancy"
+        ) from None
+    if a.ndim != 2 or a.shape[0] == 0 or a.shape[1] == 0:
+        raise ShapeError(
+            f"occupancy: expected an (H, W) array with H, W >= 1, got shape {a.shape}",
+            argument="occupancy",
+        )
+    if a.dtype == bool:
+        return a
+    if a.dtype.kind not in "iuf":
+        raise ShapeError(
+            f"occupancy: expected bools or numbers, got dtype {a.dtype}", argument="occupancy"
+        )
+    if a.dtype.kind == "f" and not np.isfinite(a).all():
+        raise NonFiniteError("occupancy: NaN or infinite values", argument="occupancy")
+    return a != 0
+
+
+def _grid_scalar(v: Any, name: str) -> int | float:
+    if isinstance(v, (bool, np.bool_)) or not isinstance(
+        v, (int, float, Fraction, np.integer, np.floating)
+    ):
+        raise OptionError(
+            f"{name}: must be a positive number, got {v!r}", argument=name, allowed="> 0"
+        )
+    return _scalar(v, name)
+
+
+def _grid_rectangles(occ: np.ndarray) -> list[tuple[int, int, int, int]]:
+    """Blocked cells merged into rectangles (r0, c0, r1, c1), half-open: runs along each
+    row, a run continued upwards while the next row has the same run."""
+    H, W = occ.shape
+    pad = np.zeros((H, W + 2), dtype=np.int8)
+    pad[:, 1:-1] = occ
+    d = np.diff(pad, axis=1)
+    out: list[tuple[int, int, int, int]] = []
+    open_: dict[tuple[int, int], int] = {}  # run (c0, c1) -> first row
+    for r in range(H + 1):
+        if r < H:
+            starts = np.flatnonzero(d[r] == 1)
+            ends = np.flatnonzero(d[r] == -1)
+            runs = set(zip(starts.tolist(), ends.tolist()))
+        else:
+            runs = set()
+        for run in [k for k in open_ if k not in runs]:
+            out.append((open_.pop(run), run[0], r, run[1]))
+        for run in runs:
+            open_.setdefault(run, r)
+    return out

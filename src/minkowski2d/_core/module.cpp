@@ -511,6 +511,7 @@ inline nb::tuple check_finite(In2<double> P) {
 void bind_collision(nb::module_& m);  // collision.cpp
 void bind_decompose(nb::module_& m);  // decompose.cpp
 void bind_planning(nb::module_& m);   // planning.cpp
+void bind_navmesh(nb::module_& m);    // navmesh.cpp
 void bind_overlay(nb::module_& m);    // overlay.cpp
 void bind_general(nb::module_& m);    // general.cpp
 void bind_polygon(nb::module_& m);    // polygon.cpp
@@ -577,6 +578,7 @@ NB_MODULE(_ext, m) {
   m.def("selftest", &mk::fp_contract_off_selftest);
   bind_collision(m);
   bind_planning(m);
+  bind_navmesh(m);
   bind_decompose(m);
   bind_overlay(m);
   bind_general(m);

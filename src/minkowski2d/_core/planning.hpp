@@ -755,13 +755,18 @@ struct Planner {
     pgrp.swap(ngrp);
   }
 
-  void build() {
+  // the exact tests only (pieces, seams, the grid): what the navigation mesh needs
+  void build_base() {
     convexify();
     P = (i64)pgrp.size();
     magnitude_cache = magnitude();
     lscale = scale_for(magnitude_cache);
     build_seams();
     build_grid();
+  }
+
+  void build() {
+    build_base();
     PlanScratch S;
     S.init((std::size_t)items());
     build_candidates(S);

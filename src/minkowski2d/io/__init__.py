@@ -20,6 +20,7 @@ from .cgal_dat import parse_cgal_dat, read_cgal_dat
 from .common import Feature, UnboundedPolygon, split_selector
 from .dxf import read_dxf
 from .features import read_features
+from .grid import parse_grid_map, read_grid_map
 from .read import parse_geometry, read_geometry
 from .write import FORMATS, format_geometry
 
@@ -35,4 +36,6 @@ __all__ = [
     "Feature",
     "read_features",
     "read_dxf",
+    "read_grid_map",
+    "parse_grid_map",
 ]

@@ -1,0 +1,434 @@
+"""Planning at map scale: the navigation mesh and its interval search against the exact
+brute-force reference of test_planning.py, a robot per query, grid maps and .map files.
+
+Every scene here is planned with ``method="mesh"`` where the mesh can be built (the
+scenes with zero-width passages or inexact crossings fall back to the visibility graph
+under ``"auto"``: those are checked too, and that ``"mesh"`` refuses them with an
+OptionError).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from fractions import Fraction
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import minkowski2d as mk
+import minkowski2d.io  # noqa: F401 - mk.io
+from minkowski2d.errors import GeometryError, InputFormatError, OptionError
+
+from . import oracle as O
+from .test_planning import Oracle, check_against, convex_int, l_shapes, oracle_of, sq
+
+_X = int(os.environ.get("PLAN_EXAMPLES_SCALE", "1"))
+
+
+def planner(obs, robot=None, workspace=None):
+    """The mesh planner for the scene, or (where the mesh refuses it) the visibility
+    graph, with ``planned_by`` telling which."""
+    try:
+        return mk.MotionPlanner(obs, robot=robot, workspace=workspace, method="mesh")
+    except OptionError as exc:
+        assert "cannot plan this scene" in str(exc)
+        pl = mk.MotionPlanner(obs, robot=robot, workspace=workspace, method="auto")
+        assert pl.planned_by == "visibility"
+        return pl
+
+
+def check_many(pl, orc, pairs):
+    for s, g in pairs:
+        check_against(pl, orc, s, g)
+
+
+pairs10 = st.lists(
+    st.tuples(
+        st.tuples(st.integers(-2, 10), st.integers(-2, 10)),
+        st.tuples(st.integers(-2, 10), st.integers(-2, 10)),
+    ),
+    min_size=1,
+    max_size=6,
+)
+robots = st.sampled_from(
+    [None, [(0, 0), (1, 0), (0, 1)], [(-1, 0), (1, 0), (0, 1)], [(0, 0), (1, 0), (1, 1), (0, 1)]]
+)
+
+
+# --------------------------------------------------------------------------------------
+# named scenes
+
+
+def test_mesh_is_chosen_and_agrees_on_a_maze_of_blocks():
+    obs = [sq(x, y, x + 1, y + 1) for x in range(0, 12, 2) for y in range(0, 12, 3)]
+    pl = mk.MotionPlanner(obs, workspace=(-1, -1, 13, 13), method="mesh")
+    assert pl.planned_by == "mesh"
+    orc = oracle_of(pl)
+    check_many(pl, orc, [((-1, -1), (13, 13)), ((0, 2), (11, 1)), ((1, 1), (1, 12))])
+
+
+def test_pinch_points_are_passages():
+    # squares touching at corners (one obstacle each): the free space pinches there
+    obs = [sq(0, 0, 2, 2), sq(2, 2, 4, 4), sq(4, 0, 6, 2), sq(2, -2, 4, 0)]
+    pl = mk.MotionPlanner(obs, workspace=(-2, -4, 8, 6), method="mesh")
+    assert pl.planned_by == "mesh"
+    assert (pl.navmesh.flags == 2).sum() >= 4  # the four pinches are junctions
+    orc = oracle_of(pl)
+    # through the pinch at (2, 2): the straight line from the hole's centre
+    check_many(pl, orc, [((3, 1), (-1, 5)), ((3, 1), (7, 5)), ((3, 1), (3, 5)), ((1, 3), (5, -1))])
+    assert pl.shortest_path((3, 1), (-1, 5)).points.tolist() == [[3, 1], [-1, 5]]
+    assert pl.shortest_path((3, 1), (-1, 4)).points.tolist() == [[3, 1], [2, 2], [-1, 4]]
+
+
+def test_seam_of_one_obstacle_blocks_and_touching_obstacles_do_not():
+    L = [(0, 0), (3, 0), (3, 1), (1, 1), (1, 3), (0, 3)]
+    pl = mk.MotionPlanner([L], workspace=(-2, -2, 5, 5), method="mesh")
+    orc = oracle_of(pl)
+    check_many(pl, orc, [((2, 2), (-1, -1)), ((4, 4), (0.5, -1))])
+    # two obstacles sharing an edge: a zero-width passage (kept by the visibility graph)
+    with pytest.raises(OptionError, match="zero-width"):
+        mk.MotionPlanner([sq(0, 0, 1, 1), sq(1, 0, 2, 1)], method="mesh")
+    pl = mk.MotionPlanner([sq(0, 0, 1, 1), sq(1, 0, 2, 1)])
+    assert pl.shortest_path((1, -1), (1, 2)).points.tolist() == [[1, -1], [1, 2]]
+
+
+def test_inexact_crossing_falls_back():
+    # two triangles whose edges cross at (1/3, 1/3)-like points that are not doubles
+    obs = [[(0, 0), (3, 1), (0, 2)], [(1, -1), (2, 3), (0, 3)]]
+    with pytest.raises(OptionError, match="not a float64"):
+        mk.MotionPlanner(obs, method="mesh")
+    pl = mk.MotionPlanner(obs, method="auto")
+    assert pl.planned_by == "visibility"
+
+
+def test_query_outside_the_meshed_box_meshes_a_larger_one():
+    obs = [sq(x, 0, x + 1, 5) for x in range(0, 40, 2)]
+    pl = mk.MotionPlanner(obs, method="mesh")
+    box0 = list(pl._mesh_box)
+    orc = oracle_of(pl)
+    check_against(pl, orc, (0.5, -1000), (39.5, 1e4))
+    assert pl._mesh_box != box0 and pl.planned_by == "mesh"
+    check_against(pl, orc, (1.5, 2), (3.5, 2))
+
+
+def test_int_queries_beyond_2_53_use_the_graph():
+    obs = [sq(x, 0, x + 1, 5) for x in range(0, 140, 2)]
+    pl = mk.MotionPlanner(obs, method="mesh")
+    big = 2**60
+    path = pl.shortest_path((1, 1), (big, 1))
+    assert path.points.dtype == np.int64 and path.points[-1].tolist() == [big, 1]
+
+
+def test_float_query_on_int_mesh_scene():
+    obs = [sq(x, 0, x + 1, 5) for x in range(0, 16, 2)]
+    pl = mk.MotionPlanner(obs, method="mesh")
+    orc = oracle_of(pl)
+    p = check_against(pl, orc, (1.5, 1.25), (9.5, 1.0))
+    assert p.points.dtype == np.float64
+    p = check_against(pl, orc, (1, -1), (9, 1))
+    assert p.points.dtype == np.int64
+
+
+# --------------------------------------------------------------------------------------
+# property tests against the exact reference
+
+
+@settings(max_examples=40 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(obs=st.lists(convex_int(), min_size=1, max_size=5), robot=robots, box=st.booleans(),
+       pairs=pairs10)  # fmt: skip
+def test_mesh_random_int_scenes_against_oracle(obs, robot, box, pairs):
+    ws = (-2, -2, 10, 10) if box else None
+    pl = planner(obs, robot=robot, workspace=ws)
+    rob = robot if robot is not None else [(0, 0)]
+    neg = [(-x, -y) for x, y in rob]
+    exact = [O.minkowski_sum(o, neg) for o in obs]
+    orc = Oracle(exact, list(range(len(obs))), pl.box)
+    check_many(pl, orc, pairs)
+
+
+@settings(max_examples=25 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(obs=st.lists(st.one_of(l_shapes(), convex_int()), min_size=1, max_size=4), box=st.booleans(),
+       pairs=pairs10)  # fmt: skip
+def test_mesh_non_convex_obstacles_against_oracle(obs, box, pairs):
+    pl = planner(obs, workspace=(-3, -3, 11, 11) if box else None)
+    check_many(pl, oracle_of(pl), pairs)
+
+
+@settings(max_examples=15 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    obs=st.lists(convex_int(), min_size=1, max_size=3),
+    pairs=pairs10,
+    scale=st.sampled_from([0.1, 0.3, 1e-5, 1e-200, 1e200, 3.0**-40]),
+)
+def test_mesh_random_float_scenes_against_oracle(obs, pairs, scale):
+    fobs = [np.array(o, dtype=float) * scale + 0.25 * scale for o in obs]
+    pl = planner(fobs)
+    orc = oracle_of(pl)
+    check_many(pl, orc, [((s[0] * scale, s[1] * scale), (g[0] * scale, g[1] * scale))
+                         for s, g in pairs])  # fmt: skip
+
+
+@st.composite
+def grids(draw):
+    h = draw(st.integers(1, 6))
+    w = draw(st.integers(1, 6))
+    cells = draw(st.lists(st.booleans(), min_size=h * w, max_size=h * w))
+    return np.array(cells, dtype=bool).reshape(h, w)
+
+
+@settings(max_examples=40 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(occ=grids(), data=st.data(), robot=st.sampled_from([None, [(0, 0), (1, 0), (0, 1)]]))
+def test_grids_against_oracle_and_cells_as_blocks(occ, data, robot):
+    h, w = occ.shape
+    pt = st.tuples(st.integers(0, w), st.integers(0, h))
+    pairs = data.draw(st.lists(st.tuples(pt, pt), min_size=1, max_size=4))
+    pl = mk.MotionPlanner.from_grid(occ, robot=robot, method="mesh")
+    assert pl.planned_by == "mesh"
+    orc = oracle_of(pl)
+    for s, g in pairs:
+        check_against(pl, orc, s, g)
+    # the same with the visibility graph (every cell and the outside in one obstacle)
+    vg = mk.MotionPlanner.from_grid(occ, robot=robot, method="visibility")
+    for s, g in pairs:
+        try:
+            a = pl.shortest_path(s, g).length
+        except GeometryError as exc:
+            with pytest.raises(type(exc)):
+                vg.shortest_path(s, g)
+            continue
+        assert math.isclose(a, vg.shortest_path(s, g).length, rel_tol=1e-12)
+
+
+# --------------------------------------------------------------------------------------
+# a robot per query
+
+
+ROBOTS = [
+    None,
+    [(0, 0), (1, 0), (0, 1)],
+    sq(-1, -1, 1, 1),
+    [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)],
+]
+
+
+@settings(max_examples=25 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(obs=st.lists(convex_int(), min_size=1, max_size=4), robot=st.sampled_from(ROBOTS),
+       s=st.tuples(st.integers(-3, 11), st.integers(-3, 11)),
+       g=st.tuples(st.integers(-3, 11), st.integers(-3, 11)))  # fmt: skip
+def test_robot_per_query_equals_a_planner_for_that_robot(obs, robot, s, g):
+    base = mk.MotionPlanner(obs, workspace=(-3, -3, 11, 11))
+    own = mk.MotionPlanner(obs, robot=robot, workspace=(-3, -3, 11, 11))
+    r = [(0, 0)] if robot is None else robot
+    try:
+        want = own.shortest_path(s, g).points.tolist()
+    except GeometryError as exc:
+        with pytest.raises(type(exc)) as ei:
+            base.shortest_path(s, g, robot=r)
+        assert ei.value.argument == exc.argument
+        return
+    assert base.shortest_path(s, g, robot=r).points.tolist() == want
+    assert [p.points.tolist() for p in base.shortest_paths([s], [g], robot=r)] == [want]
+    check_against(base._for_robot(r), oracle_of(own), s, g)
+
+
+def test_robot_cache_is_bounded_and_reused():
+    pl = mk.MotionPlanner([sq(0, 0, 2, 2)])
+    first = pl._for_robot(sq(0, 0, 1, 1))
+    assert pl._for_robot(np.array(sq(0, 0, 1, 1))) is first
+    for k in range(1, 12):
+        pl.shortest_path((-5, -5), (5, 5), robot=sq(0, 0, k, 1))
+    assert len(pl._robots) == 8
+    assert first not in pl._robots.values()
+
+
+# --------------------------------------------------------------------------------------
+# grid maps and the Moving AI .map format
+
+
+MAP = """type octile
+height 4
+width 6
+map
+......
+.@@@T.
+....@.
+S..G.W
+"""
+
+
+def test_read_grid_map_and_plan(tmp_path):
+    f = tmp_path / "tiny.map"
+    f.write_text(MAP)
+    occ = mk.io.read_grid_map(f)
+    assert occ.dtype == bool and occ.shape == (4, 6)
+    assert occ[1].tolist() == [False, True, True, True, True, False]
+    assert occ[3].tolist() == [False] * 5 + [True]
+    pl = mk.MotionPlanner.from_grid(occ)
+    # (x, y) = (column, row): around the wall of row 1
+    path = pl.shortest_path((0.5, 2.5), (5.5, 2.5))
+    orc = oracle_of(pl)
+    check_against(pl, orc, (0.5, 2.5), (5.5, 2.5))
+    assert path.points.tolist()[1] == [1.0, 1.0] or path.points.tolist()[1] == [4.0, 3.0]
+    with pytest.raises(GeometryError, match="outside the workspace"):
+        pl.shortest_path((-1, 0), (1, 1))
+    assert pl.locate([(-1, 0), (1.5, 1.5), (0.5, 0.5)]).tolist() == [-2, 0, -1]
+
+
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("", "empty"),
+        ("type octile\nheight 2\nwidth 2\n..\n..\n", "'map'"),
+        ("type octile\nheight x\nwidth 2\nmap\n..\n..\n", "height"),
+        ("type octile\nheight 2\nwidth 0\nmap\n\n\n", "width"),
+        ("type octile\nheight 3\nwidth 2\nmap\n..\n..\n", "height is 3 but the map has 2 rows"),
+        ("type octile\nheight 2\nwidth 2\nmap\n..\n...\n", "line 6"),
+        ("type octile\nheight 2\nwidth 2\nmap\n..\n.x\n", "'x'"),
+        ("height 2\nwidth 2\nmap\n..\n..\n", "type"),
+    ],
+)
+def test_read_grid_map_errors(tmp_path, text, match):
+    f = tmp_path / "bad.map"
+    f.write_text(text)
+    with pytest.raises(InputFormatError, match=match) as ei:
+        mk.io.read_grid_map(f)
+    assert ei.value.argument == str(f)
+
+
+def test_from_grid_options():
+    occ = np.zeros((3, 3), bool)
+    occ[1, 1] = True
+    pl = mk.MotionPlanner.from_grid(occ, cell_size=0.5, origin=(10, 20))
+    p = pl.shortest_path((10, 20), (11.5, 21.5))
+    assert p.points.tolist() == [[10.0, 20.0], [10.5, 21.0], [11.5, 21.5]] or math.isclose(
+        p.length, math.hypot(0.5, 1) + math.hypot(1, 0.5)
+    )
+    with pytest.raises(OptionError, match="cell_size"):
+        mk.MotionPlanner.from_grid(occ, cell_size=0)
+    with pytest.raises(OptionError, match="cell_size"):
+        mk.MotionPlanner.from_grid(occ, cell_size="1")
+    with pytest.raises(GeometryError, match="occupancy"):
+        mk.MotionPlanner.from_grid(np.zeros(3, bool))
+    with pytest.raises(OptionError, match="method"):
+        mk.MotionPlanner.from_grid(occ, method="fast")
+
+
+def test_cli_plan_reads_a_map(tmp_path, capsys):
+    import json
+
+    from minkowski2d.cli import main
+
+    f = tmp_path / "tiny.map"
+    f.write_text(MAP)
+    assert main(["plan", str(f), "--start", "0.5,2.5", "--goal", "5.5,2.5"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["path"][0] == [0.5, 2.5] and out["path"][-1] == [5.5, 2.5]
+    assert main(["plan", str(f), "--start=-3,2", "--goal", "5.5,2.5"]) == 2
+    assert "outside the workspace" in capsys.readouterr().err
+    bad = tmp_path / "bad.map"
+    bad.write_text("type octile\nheight 1\nwidth 2\nmap\n.?\n")
+    assert main(["plan", str(bad), "--start", "0,0", "--goal", "1,1"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "'?'" in err
+    # a robot on the command line
+    assert main(["plan", str(f), "--start", "0.5,2.5", "--goal", "2.5,0.5",
+                 "--robot", "[[0,0],[0.5,0],[0,0.5]]"]) == 0  # fmt: skip
+    out = json.loads(capsys.readouterr().out)
+    assert out["path"][-1] == [2.5, 0.5]
+
+
+def test_navmesh_cells_cover_the_free_space():
+    import shapely
+
+    obs = [sq(x, y, x + 1, y + 2) for x in range(0, 10, 3) for y in range(0, 10, 4)]
+    pl = mk.MotionPlanner(obs, workspace=(-1, -1, 11, 11), method="mesh")
+    m = pl.navmesh
+    cells = [shapely.Polygon(m.vertices[c]) for c in m.cells]
+    assert all(c.is_valid and c.exterior.is_ccw for c in cells)
+    free = shapely.box(-1, -1, 11, 11).difference(
+        shapely.union_all([shapely.Polygon(o) for o in obs])
+    )
+    assert math.isclose(sum(c.area for c in cells), free.area)
+    assert mk.MotionPlanner(obs, method="visibility").navmesh is None
+    assert Fraction(m.vertices[0][0]) == m.vertices[0][0]
+
+
+def _maze(n, seed):
+    rng = np.random.default_rng(seed)
+    occ = np.ones((2 * n + 1, 2 * n + 1), bool)
+    seen = np.zeros((n, n), bool)
+    stack = [(0, 0)]
+    seen[0, 0] = occ[1, 1] = False
+    seen[0, 0] = True
+    while stack:
+        i, j = stack[-1]
+        nb = [(i + a, j + b) for a, b in ((1, 0), (-1, 0), (0, 1), (0, -1))
+              if 0 <= i + a < n and 0 <= j + b < n and not seen[i + a, j + b]]  # fmt: skip
+        if not nb:
+            stack.pop()
+            continue
+        a, b = nb[int(rng.integers(len(nb)))]
+        seen[a, b] = True
+        occ[2 * a + 1, 2 * b + 1] = occ[i + a + 1, j + b + 1] = False
+        stack.append((a, b))
+    return occ
+
+
+@pytest.mark.parametrize("kind", ["maze", "cave"])
+def test_mesh_equals_visibility_on_game_maps(kind):
+    # dead ends (mazes) and pinches between diagonal blocks (caves): the mesh's lengths
+    # equal the visibility graph's (itself checked against the exact reference)
+    rng = np.random.default_rng(5)
+    if kind == "maze":
+        occ = _maze(7, 3)
+    else:
+        occ = rng.random((24, 24)) < 0.42
+    mesh = mk.MotionPlanner.from_grid(occ, method="mesh")
+    vis = mk.MotionPlanner.from_grid(occ, method="visibility")
+    h, w = occ.shape
+    pts = [
+        (int(x), int(y)) for x, y in zip(rng.integers(0, w + 1, 160), rng.integers(0, h + 1, 160))
+    ]
+    free = np.argwhere(~occ)
+    pts += [(c + 0.5, r + 0.5) for r, c in free[rng.integers(len(free), size=80)].tolist()]
+    for s, g in zip(pts[0::2], pts[1::2]):
+        try:
+            want = vis.shortest_path(s, g)
+        except GeometryError as exc:
+            with pytest.raises(type(exc)):
+                mesh.shortest_path(s, g)
+            continue
+        got = mesh.shortest_path(s, g)
+        assert math.isclose(got.length, want.length, rel_tol=1e-12), (s, g)
+        assert all(mesh._core.segment_free(*a, *b) for a, b in zip(got.points, got.points[1:]))
+
+
+def test_plot_and_polygons_show_the_mesh():
+    plt = pytest.importorskip("matplotlib.pyplot")
+    occ = np.zeros((4, 5), bool)
+    occ[1:3, 2] = True
+    pl = mk.MotionPlanner.from_grid(occ, method="mesh")
+    import shapely
+
+    cells = pl.navmesh.polygons()
+    inside = [c.intersection(shapely.box(0, 0, 5, 4)).area for c in cells]  # the grid
+    assert math.isclose(sum(inside), 4 * 5 - 2)  # (the mesh's box reaches beyond it)
+    ax = pl.plot(path=pl.shortest_path((0, 2), (5, 2)), mesh=True)
+    assert len(ax.lines) >= len(cells)
+    plt.close(ax.figure)
+    assert mk.MotionPlanner.from_grid(occ, method="visibility").navmesh is None
+
+
+def test_mesh_locate_names_the_lowest_of_overlapping_obstacles():
+    L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
+    T = [(0, 0), (2, 0), (0, 1)]
+    for obs in ([L, T], [T, L], [T, L, T]):
+        pl = mk.MotionPlanner(obs, method="mesh")
+        got = pl.locate([(0.5, 0.5), (1.0, 0.25), (1.5, 0.5), (0.5, 1.5), (3, 3)]).tolist()
+        assert got == [0, 0, obs.index(L), obs.index(L), -1]
+        with pytest.raises(GeometryError) as ei:
+            pl.shortest_path((1.5, 0.5), (3, 3))
+        assert ei.value.obstacle == obs.index(L)
