@@ -257,6 +257,6 @@ class TestFilesAUserCanLose:
 
     def test_plugins_do_not_import_cli(self):
         root = Path(__file__).resolve().parents[1] / "src" / "minkowski2d"
-        for f in ("collision", "general", "animation", "features", "offset", "nesting"):
+        for f in ("collision", "general", "animation", "features", "offset", "nesting", "planning"):
             text = (root / "cli" / f"{f}.py").read_text()
             assert "from . import" not in text and "from ..cli import" not in text, f

@@ -38,9 +38,10 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from ._core import _ext
+from ._engine import core
 from ._engine import dispatch as D
 from ._engine import options as _options
+from ._engine.coerce import is_shapely
 from ._engine.foreign import foreign_errors
 from .errors import (
     EmptyGeometryError,
@@ -55,8 +56,8 @@ from .errors import (
 __all__ = ["MotionPlanner", "Path", "NavMesh"]
 
 _NOT_CONVEX = (D.Status.TURNS_BOTH_WAYS, D.Status.SPIKE, D.Status.WINDS_TWICE)
-_F53 = 1 << 53
-_INT_LIMIT = int(_ext.INT_LIMIT)
+_F53 = core.FLOAT_EXACT_INT
+_INT_LIMIT = core.INT_LIMIT
 METHODS = ("auto", "mesh", "visibility")
 _MESH_MIN_PIECES = 64  # "auto": smaller scenes keep the visibility graph (as fast there)
 _MESH_RANGE = 2.0**500
@@ -165,10 +166,6 @@ _F26 = 1 << 26
 # input
 
 
-def _is_shapely(obj: Any) -> bool:
-    return type(obj).__module__.startswith("shapely")
-
-
 def _triangulate(poly: Any, name: str) -> list[np.ndarray]:
     """Convex pieces (triangles) of a shapely polygon with holes: the core's exact
     triangulation (every decision an exact sign, every triangle vertex an input vertex,
@@ -186,7 +183,7 @@ _SIMPLE_HINT = "fix the ring (it must not cross itself)"
 
 def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
     """Convex pieces of one polygon-like input and their kind ("int" or "float")."""
-    if _is_shapely(obj):
+    if is_shapely(obj):
         gt = obj.geom_type
         if gt == "MultiPolygon" or gt == "GeometryCollection":
             if obj.is_empty:
@@ -211,7 +208,7 @@ def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
             hint="scale the scene or pass floats",
         )
     kind = "int" if path == "i" else "float"
-    idx, _, code, v = (_ext.normalize_i if path == "i" else _ext.normalize_f)(data)
+    idx, _, code, v = (core.normalize_i if path == "i" else core.normalize_f)(data)
     if code == D.Status.OK:
         return [np.ascontiguousarray(data[idx])], kind
     if code not in _NOT_CONVEX:
@@ -246,7 +243,7 @@ def _as_kind(arrs: list[np.ndarray], kind: str, name: str) -> list[np.ndarray]:
 
 
 def _is_box(workspace: Any) -> bool:
-    if _is_shapely(workspace) or isinstance(workspace, (str, bytes)):
+    if is_shapely(workspace) or isinstance(workspace, (str, bytes)):
         return False
     try:
         a = np.asarray(workspace, dtype=object)
@@ -280,7 +277,7 @@ def _scalar(v: Any, name: str) -> int | float:
 
 
 def _point(p: Any, name: str) -> tuple[Any, Any]:
-    if _is_shapely(p):
+    if is_shapely(p):
         if p.geom_type != "Point":
             raise ShapeError(f"{name}: expected a point, got a {p.geom_type}", argument=name)
         if p.is_empty:
@@ -560,7 +557,7 @@ class MotionPlanner:
     def _read_obstacles(obstacles: Any) -> list:
         if obstacles is None:
             return []
-        if _is_shapely(obstacles):
+        if is_shapely(obstacles):
             if obstacles.geom_type in ("MultiPolygon", "GeometryCollection"):
                 return list(obstacles.geoms)
             return [obstacles]
@@ -625,7 +622,7 @@ class MotionPlanner:
                     hint="scale the scene down (or use a box workspace)",
                 )
         self._frame = f
-        if _is_shapely(workspace):
+        if is_shapely(workspace):
             inner = workspace
         else:
             inner = shapely.Polygon(_ring_coords(workspace))
@@ -650,9 +647,9 @@ class MotionPlanner:
     def _make_core(self, kind: str) -> Any:
         self._mesh_box: Any = None
         if self.method != "visibility":
-            core = self._make_mesh(kind)
-            if core is not None:
-                return core
+            planner = self._make_mesh(kind)
+            if planner is not None:
+                return planner
         return self._make_graph(kind)
 
     def _solid(self, dt: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -690,8 +687,8 @@ class MotionPlanner:
                 if not all(math.isfinite(v) and abs(v) < _MESH_RANGE for v in mb):
                     why = "the scene's magnitude is beyond the mesh's range (2**500)"
         if why is None:
-            core = _ext.MeshPlannerF()
-            st = core.build(
+            planner = core.MeshPlannerF()
+            st = planner.build(
                 c,
                 o,
                 g,
@@ -699,13 +696,13 @@ class MotionPlanner:
                 self._frame is not None,
                 np.asarray(mb, dtype=np.float64),
             )
-            if st == _ext.MESH_OK:
+            if st == core.MESH_OK:
                 self._mesh_box = mb
-                return core
+                return planner
             why = {
-                _ext.MESH_INEXACT: "a crossing of two C-obstacle edges on the free space's "
+                core.MESH_INEXACT: "a crossing of two C-obstacle edges on the free space's "
                 "boundary is not a float64 value",
-                _ext.MESH_ZERO_WIDTH: "the free space has zero-width passages (obstacles, or "
+                core.MESH_ZERO_WIDTH: "the free space has zero-width passages (obstacles, or "
                 "an obstacle and the workspace box, touching along an edge)",
             }.get(st, "the mesh could not be built")
         if self.method == "mesh":
@@ -741,11 +738,11 @@ class MotionPlanner:
         g = np.ascontiguousarray(self.groups[solid], np.int64)
         dt = np.int64 if kind == "int" else np.float64
         box = np.asarray(self.box if self.box is not None else [], dtype=dt)
-        core = (_ext.PlannerI if kind == "int" else _ext.PlannerF)()
+        planner = (core.PlannerI if kind == "int" else core.PlannerF)()
         # a polygon workspace's frame lies strictly outside workspace ⊖ robot: the box of
         # the reference point is then open (no point on the frame is valid)
-        core.build(c, o, g, np.ascontiguousarray(box), self.threads, self._frame is not None)
-        return core
+        planner.build(c, o, g, np.ascontiguousarray(box), self.threads, self._frame is not None)
+        return planner
 
     def _float_twin(self) -> Any:
         """The same planner on float64 coordinates (for float queries on an int scene)."""
@@ -1092,7 +1089,7 @@ class MotionPlanner:
 
     @staticmethod
     def _points(points: Any, name: str) -> list[tuple]:
-        if _is_shapely(points):
+        if is_shapely(points):
             return [_point(points, name)]
         arr = points
         if isinstance(arr, np.ndarray):
@@ -1107,7 +1104,7 @@ class MotionPlanner:
                 f"{type(arr).__name__}",
                 argument=name,
             ) from None
-        if len(seq) == 2 and not hasattr(seq[0], "__len__") and not _is_shapely(seq[0]):
+        if len(seq) == 2 and not hasattr(seq[0], "__len__") and not is_shapely(seq[0]):
             return [_point(seq, name)]
         return [_point(r, f"{name}[{i}]") for i, r in enumerate(seq)]
 

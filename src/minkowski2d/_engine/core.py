@@ -19,6 +19,7 @@ import enum
 
 from .._core import _ext
 from .._core._ext import (  # the kernels: the whole surface between Python and C++
+    MeshPlannerF,
     PlannerF,
     PlannerI,
     check_polygons_f,
@@ -59,6 +60,7 @@ __all__ = [
     "FLOAT_EXACT_INT",
     "ERRBOUND",
     "MINBOUND",
+    "MeshPlannerF",
     "PlannerF",
     "PlannerI",
     "check_polygons_f",
@@ -141,3 +143,8 @@ OFFSET_DISTANCE: int = _ext.OFFSET_DISTANCE
 OFFSET_UNDERFLOW: int = _ext.OFFSET_UNDERFLOW
 OFFSET_OVERFLOWS: int = _ext.OFFSET_OVERFLOWS
 OFFSET_DETOUR: int = _ext.OFFSET_DETOUR
+#: The navigation mesh's build codes (navmesh.hpp).
+MESH_OK: int = _ext.MESH_OK
+MESH_INEXACT: int = _ext.MESH_INEXACT
+MESH_ZERO_WIDTH: int = _ext.MESH_ZERO_WIDTH
+MESH_FAILED: int = _ext.MESH_FAILED

@@ -30,7 +30,7 @@ _PLUGINS = (
     "minkowski2d.cli.general",
     "minkowski2d.cli.offset",
     "minkowski2d.cli.nesting",
-    "minkowski2d._cli_planning",
+    "minkowski2d.cli.planning",
 )
 
 

@@ -12,7 +12,10 @@ import math
 import sys
 from typing import Any
 
-_FORMATS = ("json", "geojson", "svg")
+from .. import io as _io
+
+#: what a plan is written as: the library's formats but WKT (a path is not a polygon)
+_FORMATS = tuple(f for f in _io.FORMATS if f != "wkt")
 
 
 def add_parser(subparsers: argparse._SubParsersAction) -> None:
@@ -54,7 +57,7 @@ def _number(text: str) -> int | float:
 
 
 def _xy(text: str, name: str) -> tuple[Any, Any]:
-    from .errors import ShapeError
+    from ..errors import ShapeError
 
     parts = text.split(",")
     try:
@@ -87,9 +90,9 @@ def _is_map(source: str) -> bool:
 def _robot(text: str | None) -> Any:
     if text is None:
         return None
-    from ._foreign import foreign_errors
-    from .errors import InputFormatError
-    from .io import parse_geometry
+    from .._engine.foreign import foreign_errors
+    from ..errors import InputFormatError
+    from ..io import parse_geometry
 
     try:
         with foreign_errors("--robot", "reading the robot"):
@@ -101,8 +104,8 @@ def _robot(text: str | None) -> Any:
 
 
 def _read_scene(source: str) -> Any:
-    from ._engine.foreign import foreign_errors
-    from .errors import InputFormatError
+    from .._engine.foreign import foreign_errors
+    from ..errors import InputFormatError
 
     try:
         text = sys.stdin.read() if source == "-" else open(source, encoding="utf-8").read()
@@ -118,9 +121,9 @@ def _read_scene(source: str) -> Any:
 
 
 def _cmd_plan(args: argparse.Namespace) -> int:
-    from .cli import emit
-    from .errors import GeometryError
-    from .planning import MotionPlanner
+    from ..errors import GeometryError
+    from ..planning import MotionPlanner
+    from .common import emit
 
     fmt = args.format
     if fmt is None:
@@ -130,7 +133,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
     goal = _xy(args.goal, "goal")
     robot = _robot(args.robot)
     if _is_map(args.scene):
-        from .io import read_grid_map
+        from ..io import read_grid_map
 
         scene: Any = None
         planner = MotionPlanner.from_grid(read_grid_map(args.scene))
@@ -161,7 +164,7 @@ def _cmd_plan(args: argparse.Namespace) -> int:
 def _length(path: Any, note: bool = True) -> float | None:
     """The path's length, or None (JSON null) when it does not fit in float64: the path
     is valid and is written all the same, with a note on standard error."""
-    from .errors import OverflowGeometryError
+    from ..errors import OverflowGeometryError
 
     try:
         return path.length
@@ -255,7 +258,7 @@ def svg(planner: Any, path: Any, start: Any, goal: Any) -> str:
     x0, x1, y0, y1 = (float(v) for v in (allx.min(), allx.max(), ally.min(), ally.max()))
     w, h = max(x1 - x0, 1e-9), max(y1 - y0, 1e-9)
     if not (math.isfinite(w) and math.isfinite(h) and math.isfinite(1.1 * max(w, h))):
-        from .errors import OverflowGeometryError
+        from ..errors import OverflowGeometryError
 
         raise OverflowGeometryError(
             "svg: the drawing's extent overflows float64",
