@@ -46,6 +46,10 @@ class GeometryError(ValueError):
         Index of the offending vertex in the caller's own numbering.
     hint : str, optional
         What the caller can do about it.
+    obstacle : int, optional
+        For a motion-planning point in collision: the index of the obstacle (the lowest of
+        overlapping ones) whose C-obstacle holds it; None otherwise (also outside the
+        workspace).
 
     Callers (the CLI, the animation page) read these fields; nobody parses the message.
 
@@ -63,6 +67,7 @@ class GeometryError(ValueError):
         argument: str | None = None,
         vertex: int | None = None,
         hint: str | None = None,
+        obstacle: int | None = None,
     ) -> None:
         super().__init__(message, *args)
         if argument is None and isinstance(message, str) and ": " in message:
@@ -72,6 +77,7 @@ class GeometryError(ValueError):
         self.argument = argument
         self.vertex = vertex
         self.hint = hint
+        self.obstacle = obstacle
 
     @property
     def detail(self) -> str:

@@ -50,15 +50,14 @@ class _Queries:
                 argument=which,
                 hint="move it inside workspace ⊖ robot",
             )
-            e.obstacle = None  # type: ignore[attr-defined]
             return e
         name = self._group_name(grp)
         e = GeometryError(
             f"{which}: {where} is in collision with {name} (inside its C-obstacle)",
             argument=which,
             hint="move it out of the C-obstacle; touching is allowed",
+            obstacle=grp,
         )
-        e.obstacle = grp  # type: ignore[attr-defined]
         return e
 
     # ------------------------------------------------------------------ queries
