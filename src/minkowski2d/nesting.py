@@ -8,9 +8,9 @@ translations that put ``B`` wholly inside ``C``.
 
 :func:`no_fit_polygons` computes the NFPs of many parts, for every ordered pair and
 every allowed rotation, in one batch (:func:`minkowski2d.minkowski_sum_general_many`):
-each part is read and decomposed into convex pieces once per orientation, all piece
-pairs are summed in one compiled call, and GEOS unites them pair by pair in vectorized
-groups. Two symmetries, both exact for rotations by multiples of 90 degrees, cut the
+each part is read and validated once per orientation, and each chunk of NFPs is one
+compiled call on the exact overlay (every vertex the correctly rounded exact vertex).
+Two symmetries, both exact for rotations by multiples of 90 degrees, cut the
 work about fourfold:
 
 * ``NFP(rot_r A, rot_s B) = rot_r NFP(A, rot_(s−r) B)`` (rotation is linear), and

@@ -1,33 +1,25 @@
 """Non-convex Minkowski sums (polygons with holes) and the Minkowski difference (erosion).
 
-Two methods compute ``A ⊕ B`` for simple polygons with holes and collections of them:
+Every decision is made by the compiled core's exact overlay (``_core/overlay.hpp``):
+exact signs (a float filter with a certified bound, exact dyadic arithmetic where it
+cannot tell), intersection points kept exact and rounded once, so every output vertex is
+the correctly rounded exact vertex. Two methods compute ``A ⊕ B`` for simple polygons
+with holes and collections of them, and give the same vertices:
 
-* ``method="decomposition"`` (default): both operands are cut into convex pieces
-  (Hertel-Mehlhorn, see :func:`convex_decomposition`), every pair of pieces is summed in
-  one batched call (:func:`minkowski2d.minkowski_sum_many`), and the convex sums are
-  unioned by GEOS. The union is done in rounds: the largest sums first, then the sums
-  reaching farthest from the centre; after each round every remaining sum that lies
-  strictly inside the union so far is dropped. The order only changes the speed; the
-  result is the union of all piece sums.
-* ``method="convolution"``: the reduced convolution (Behar & Lien 2011): segments
-  ``e + v`` for an edge ``e`` of one boundary and a convex vertex ``v`` of the other
-  whose normal cone holds the edge's normal. Every boundary point of the sum lies on one
-  of them, so each face of their arrangement (noded and polygonized by GEOS) is wholly
-  inside or wholly outside the sum. The orientability filter: just left of every segment
-  is inside the sum, so a face with a boundary edge carrying a segment that has the face
-  on its left is inside. The remaining faces are hole candidates; the hole filter keeps
-  one as a hole only if ``A`` does not meet ``x − B`` for a point ``x`` inside it.
+* ``method="decomposition"``: both operands cut into convex pieces (an exact
+  triangulation merged by Hertel-Mehlhorn, see :func:`convex_decomposition`), every
+  pair of pieces summed by the convex merge, the sums united by the exact overlay
+  (sums inside another one culled first).
+* ``method="convolution"``: the full convolution of the boundaries (segments ``e + v``
+  where ``v``'s cone holds ``e``'s direction), noded by the overlay, winding number
+  >= 1; holes of one operand that the other cannot fit into are filled first.
 
-Both return a shapely Polygon or MultiPolygon (exterior rings counter-clockwise, holes
-clockwise, holes kept). Coordinates are float64 throughout: integers with at most 53
-significant bits are represented exactly (others are refused), piece sums are exact for
-them, and GEOS computes the crossings of the final union in double precision. GEOS only
-ever sees the operands multiplied by one common power of two that puts their largest
-|coordinate| in ``[2**19, 2**20)``; the result is multiplied back (both exact), so tiny
-and huge magnitudes behave like magnitudes near 1. A shapely/GEOS failure surfaces as a
-:class:`~minkowski2d.errors.GeometryError` naming the operand; the work is bounded by
-``MAX_PIECE_PAIRS``, ``MAX_CONVOLUTION_SEGMENTS`` and ``MAX_CROSSINGS``
-(:class:`~minkowski2d.errors.ResourceLimitError`; :mod:`.limits`).
+Unset, the core picks per pair: the convolution while it has at most a few segments per
+input vertex, else the pieces. Both return a shapely Polygon or MultiPolygon (exterior
+rings counter-clockwise, holes clockwise, holes kept). Nothing is scaled; integers with
+at most 53 significant bits are exact (others are refused), Fractions are rounded to
+float64 once. The work is bounded by ``MAX_PIECE_PAIRS``, ``MAX_CONVOLUTION_SEGMENTS``
+and ``MAX_CROSSINGS`` (:class:`~minkowski2d.errors.ResourceLimitError`; :mod:`.limits`).
 
 :func:`minkowski_difference` is the erosion ``A ⊖ B = {c : c + B ⊆ A}``. It is *not*
 ``A ⊕ (−B)`` (that is :func:`minkowski2d.cspace_obstacle`, the set of translations

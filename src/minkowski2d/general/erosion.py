@@ -273,7 +273,7 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     SelfIntersectionError, ShapeError, EmptyGeometryError, NonFiniteError
         Bad input (``a`` must have area).
     GeometryError
-        An integer coordinate has more than 53 significant bits, or GEOS failed.
+        An integer coordinate has more than 53 significant bits.
     OverflowGeometryError
         The erosion has a coordinate beyond the float64 range (or lies wholly below
         2**-1022, where float64 cannot hold it to full precision).
@@ -285,8 +285,8 @@ def minkowski_difference(a: Any, b: Any) -> Any:
     The erosion lies in ``bbox(A) ⊖ bbox(B)`` (``c + B ⊆ A`` puts ``c + bbox(B)`` in
     ``bbox(A)``). ``G`` is that box grown by a margin; every ``c + b`` with ``c ∈ G``
     lies in ``F``, so ``c`` misses the erosion exactly when ``c + b ∈ F \\ A`` for some
-    ``b ∈ B``. Like the sum, the erosion is computed on operands scaled by one power of
-    two (exact), so every magnitude representable in float64 works alike.
+    ``b ∈ B``. ``G \\ ((F \\ A) ⊕ (−B))`` is one run of the exact overlay (its
+    DIFFERENCE rule), decided exactly at every magnitude.
 
     Examples
     --------
@@ -313,7 +313,7 @@ def minkowski_difference(a: Any, b: Any) -> Any:
 
 
 def _erode(A: _Operand, B: _Operand) -> Any:
-    """``A ⊖ B`` of validated (scaled) operands."""
+    """``A ⊖ B`` of validated operands."""
     ra = A.convex_ring
     if ra is not None:
         # c + B ⊆ A  ⟺  c + hull(B) ⊆ A for a convex A: the exact convex erosion

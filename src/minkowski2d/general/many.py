@@ -52,11 +52,9 @@ def minkowski_sum_general_many(
         collection of operands (one sum per item), unlike in
         :func:`minkowski_sum_general`, where a list of polygons is one operand.
     method : {"auto", "decomposition", "convolution"}
-        ``"auto"``: per pair, the decomposition, or the convolution when the pair has
-        more than ``AUTO_MIN_SUMS`` piece sums and a cost model (piece sums against
-        convolution segments and their crossings, see ``AUTO_COST_SUM``) estimates it
-        at most half as costly, or when the pieces product exceeds ``MAX_PIECE_PAIRS``.
-        The other values force one method for every pair.
+        ``"auto"``: per pair, the core's choice (the convolution while it has at most a
+        few segments per input vertex, else the pieces; as :func:`minkowski_sum_general`
+        unset). The other values force one method for every pair.
     progress : bool or callable, optional
         ``True`` shows a tqdm bar (when tqdm is installed) over the pairs; a callable is
         called as ``progress(done, total)`` after each chunk of pairs.
@@ -67,8 +65,8 @@ def minkowski_sum_general_many(
     -------
     numpy.ndarray of object
         ``result[k]`` is ``minkowski_sum_general(As[k], Bs[k])`` (a Polygon or
-        MultiPolygon, the same set, normalized the same way; where ``"auto"`` picks
-        the convolution, crossing points may differ in the last bit).
+        MultiPolygon, the same vertices: both methods give the correctly rounded exact
+        vertices).
 
     Raises
     ------
@@ -80,13 +78,9 @@ def minkowski_sum_general_many(
     Notes
     -----
     Every distinct operand (the same Python object passed several times counts once) is
-    read, validated and decomposed once. The convex sums of all piece pairs of all
-    decomposed pairs are computed in one batched call on the caller's own coordinates
-    (exact for integers up to 2**52). Each pair's sums are then scaled by the pair's
-    power of two (as :func:`minkowski_sum_general` does) and unioned by GEOS: pairs of
-    similar size together in one vectorized ``union_all``, pairs with more than
-    ``GROUP_UNION_MAX`` sums in rounds that drop sums already covered (as
-    :func:`minkowski_sum_general` does).
+    read and validated once and put in one table with its convex pieces; each chunk of
+    pairs is one compiled call (``threads`` splits the pairs): per pair the method, the
+    sums and the exact overlay, rings out. Python only builds the shapely results.
 
     Examples
     --------

@@ -317,7 +317,7 @@ def convex_decomposition(poly: Any, *, method: str = "hertel-mehlhorn") -> Ragge
     ShapeError, EmptyGeometryError, NonFiniteError
         Bad input.
     GeometryError
-        An integer coordinate has more than 53 significant bits, or GEOS failed.
+        An integer coordinate has more than 53 significant bits.
 
     Notes
     -----

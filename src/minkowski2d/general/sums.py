@@ -258,10 +258,11 @@ def minkowski_sum_general(
         point, a segment or collinear points are taken as that degenerate convex set.
         Whatever :func:`minkowski2d.io.read_geometry` returns is accepted.
     method : {"decomposition", "convolution"}, optional
-        ``"decomposition"``: convex pieces, all pairs summed in one batch, GEOS union.
-        ``"convolution"``: reduced convolution, GEOS arrangement, orientability and
-        hole filters. Both give the same set. Unset (``None``): the decomposition, or
-        the convolution when the pieces product exceeds ``MAX_PIECE_PAIRS``.
+        ``"decomposition"``: convex pieces, all pairs summed, the sums united by the
+        exact overlay. ``"convolution"``: the full convolution of the boundaries, noded
+        by the exact overlay (winding number >= 1). Both give the same vertices. Unset
+        (``None``): the core picks per pair (the convolution while it has at most a few
+        segments per input vertex, else the pieces), within the work limits.
     decomposition : {"hertel-mehlhorn", "triangulation"}
         The pieces used by ``method="decomposition"``.
 
@@ -282,23 +283,20 @@ def minkowski_sum_general(
         Bad input.
     GeometryError
         An integer coordinate has more than 53 significant bits (float64 would round
-        it), or GEOS failed (the message names the operand or ``"a, b"``).
+        it); the message names the operand or ``"a, b"``.
     OverflowGeometryError
         The sum has a coordinate beyond the float64 range.
     ResourceLimitError
-        The work exceeds ``MAX_PIECE_PAIRS`` (explicit decomposition) or
-        ``MAX_CONVOLUTION_TESTS`` / ``MAX_CONVOLUTION_CROSSINGS`` (convolution).
+        The work exceeds ``MAX_PIECE_PAIRS`` (decomposition),
+        ``MAX_CONVOLUTION_SEGMENTS`` (convolution) or ``MAX_CROSSINGS`` (either).
 
     Notes
     -----
-    Both operands are multiplied by one power of two, ``2**k``, chosen so that their
-    largest |coordinate| lies in ``[2**19, 2**20)``; GEOS works on the scaled values and
-    the result is multiplied by ``2**-k``. Both scalings are exact in binary floating
-    point (barring gradual underflow below 2**-1022), so any magnitude from 2**-1074 to
-    the float64 limit is computed as well as magnitudes near 1. Integer coordinates with
-    at most 53 significant bits are exact, every convex piece sum is exact for them, and
-    the union's crossing points are rounded once (relative error about 2**-52 of the
-    result's extent). Fractions are rounded to float64 once, after the exact scale.
+    Every decision is an exact sign at every magnitude from 2**-1074 to the float64
+    limit (nothing is scaled); every output vertex is the float64 nearest to the exact
+    vertex (where rounding alone would make the result invalid, the rounded rings are
+    re-noded: see docs/design.md, "The exact overlay"). Integer input whose exact
+    vertices are integers gives those integers. Fractions are rounded to float64 once.
 
     Examples
     --------
