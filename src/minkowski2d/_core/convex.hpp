@@ -5,6 +5,7 @@
 // |x| < 2^62, or finite double); every decision goes through mk::cross_sign.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -407,6 +408,40 @@ inline i64 hull_sorted(const T* p, const i64* order, i64 n, i64* h) {
     h[k++] = i;
   }
   return k > 0 ? k - 1 : 0;
+}
+
+// The convex pieces (ragged: coordinates and offsets) of two operands normalized for the
+// merge: A's norms (vertex ids in ia), B's (in ib).
+struct PiecePair {
+  std::vector<Norm> A, B;
+  std::vector<i64> ia, ib;
+};
+
+// OK, or the code of the first piece that is not a proper convex polygon (*bad: its
+// index, B's after A's).
+inline int normalize_pieces(const double* pa, const i64* oa, i64 na, const double* pb,
+                            const i64* ob, i64 nb, PiecePair& pp, i64* bad = nullptr) {
+  pp.A.assign(na, Norm{});
+  pp.B.assign(nb, Norm{});
+  i64 big = 1;
+  for (i64 k = 0; k < na; ++k) big = std::max(big, oa[k + 1] - oa[k]);
+  for (i64 k = 0; k < nb; ++k) big = std::max(big, ob[k + 1] - ob[k]);
+  std::vector<i64> keep(big);
+  std::vector<std::int8_t> turn(big);
+  pp.ia.assign(oa[na] > 0 ? oa[na] : 1, 0);
+  pp.ib.assign(ob[nb] > 0 ? ob[nb] : 1, 0);
+  for (i64 k = 0; k < na + nb; ++k) {
+    const bool isa = k < na;
+    const i64 q = isa ? k : k - na;
+    Norm& N = isa ? pp.A[q] : pp.B[q];
+    N = isa ? normalize(pa, oa[q], oa[q + 1], keep.data(), turn.data(), pp.ia.data() + oa[q])
+            : normalize(pb, ob[q], ob[q + 1], keep.data(), turn.data(), pp.ib.data() + ob[q]);
+    if (N.code) {
+      if (bad) *bad = k;
+      return N.code;
+    }
+  }
+  return OK;
 }
 
 }  // namespace mk

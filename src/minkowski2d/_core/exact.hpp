@@ -110,32 +110,33 @@ inline Unpacked unpack(double x) {
   return u;
 }
 
-// Products of two finite doubles are m * 2^e with e in [-2148, 1942] and m < 2^106.
-constexpr int ACC_EMIN = -2148;
-constexpr int ACC_WORDS = 68;  // 4352 bits: 2148 + 1942 + 106 + carry room
-
-struct Acc {
-  u64 w[ACC_WORDS];
-  int lo = ACC_WORDS, hi = -1;  // touched word range
-  Acc() { std::memset(w, 0, sizeof w); }
-  void add(u128 v, int e) {
-    if (v == 0) return;
-    int pos = e - ACC_EMIN;
-    int word = pos >> 6, sh = pos & 63;
-    u128 low = v << sh;  // low 128 bits of v * 2^sh
-    u64 top = sh ? (u64)(v >> (128 - sh)) : 0;
-    u64 parts[3] = {(u64)low, (u64)(low >> 64), top};
+// A fixed-point accumulator of WORDS 64-bit words whose lowest bit weighs 2^EMIN: exact
+// sums of products of doubles (the terms are unsigned; signs go to a P and an N one).
+template <int EMIN, int WORDS>
+struct FixedAcc {
+  u64 w[WORDS];
+  int lo = WORDS, hi = -1;  // touched word range
+  FixedAcc() { std::memset(w, 0, sizeof w); }
+  // w += (v[0] + v[1] 2^64 + ... ) * 2^e for NV words v, exactly
+  template <int NV>
+  void add_words(const u64 (&v)[NV], int e) {
+    const int pos = e - EMIN;
+    const int word = pos >> 6, sh = pos & 63;
+    u64 parts[NV + 1];
+    parts[0] = v[0] << sh;
+    for (int t = 1; t < NV; ++t) parts[t] = (v[t] << sh) | (sh ? v[t - 1] >> (64 - sh) : 0);
+    parts[NV] = sh ? v[NV - 1] >> (64 - sh) : 0;
     u64 carry = 0;
     int k = word;
-    for (int t = 0; t < 3; ++t, ++k) {
-      u128 s = (u128)w[k] + parts[t] + carry;
-      w[k] = (u64)s;
-      carry = (u64)(s >> 64);
+    for (int t = 0; t <= NV; ++t, ++k) {
+      u128 sum = (u128)w[k] + parts[t] + carry;
+      w[k] = (u64)sum;
+      carry = (u64)(sum >> 64);
     }
     while (carry) {
-      u128 s = (u128)w[k] + carry;
-      w[k] = (u64)s;
-      carry = (u64)(s >> 64);
+      u128 sum = (u128)w[k] + carry;
+      w[k] = (u64)sum;
+      carry = (u64)(sum >> 64);
       ++k;
     }
     if (word < lo) lo = word;
@@ -144,7 +145,8 @@ struct Acc {
 };
 
 // sign(P - N) for two accumulators
-inline int compare(const Acc& P, const Acc& N) {
+template <int EMIN, int WORDS>
+inline int compare(const FixedAcc<EMIN, WORDS>& P, const FixedAcc<EMIN, WORDS>& N) {
   int top = P.hi > N.hi ? P.hi : N.hi;
   int bot = P.lo < N.lo ? P.lo : N.lo;
   for (int k = top; k >= bot && k >= 0; --k) {
@@ -153,12 +155,18 @@ inline int compare(const Acc& P, const Acc& N) {
   return 0;
 }
 
+// Products of two finite doubles are m * 2^e with e in [-2148, 1942] and m < 2^106.
+constexpr int ACC_EMIN = -2148;
+constexpr int ACC_WORDS = 68;  // 4352 bits: 2148 + 1942 + 106 + carry room
+using Acc = FixedAcc<ACC_EMIN, ACC_WORDS>;
+
 inline void add_product(Acc& P, Acc& N, double x, double y, bool negate) {
   if (x == 0.0 || y == 0.0) return;
   Unpacked a = unpack(x), b = unpack(y);
   u128 m = (u128)a.m * b.m;
   bool neg = (a.neg != b.neg) != negate;
-  (neg ? N : P).add(m, a.e + b.e);
+  const u64 v[2] = {(u64)m, (u64)(m >> 64)};
+  (neg ? N : P).add_words(v, a.e + b.e);
 }
 
 }  // namespace detail
@@ -278,43 +286,7 @@ namespace detail {
 constexpr int ACC4_EMIN = -4296;
 constexpr int ACC4_WORDS = 134;  // 8576 bits: 4296 + 3884 + 212 + carry room
 
-struct Acc4 {
-  u64 w[ACC4_WORDS];
-  int lo = ACC4_WORDS, hi = -1;
-  Acc4() { std::memset(w, 0, sizeof w); }
-  void add(const u64 v[4], int e) {
-    int pos = e - ACC4_EMIN;
-    int word = pos >> 6, sh = pos & 63;
-    u64 parts[5];
-    parts[0] = v[0] << sh;
-    for (int t = 1; t < 4; ++t) parts[t] = (v[t] << sh) | (sh ? v[t - 1] >> (64 - sh) : 0);
-    parts[4] = sh ? v[3] >> (64 - sh) : 0;
-    u64 carry = 0;
-    int k = word;
-    for (int t = 0; t < 5; ++t, ++k) {
-      u128 s = (u128)w[k] + parts[t] + carry;
-      w[k] = (u64)s;
-      carry = (u64)(s >> 64);
-    }
-    while (carry) {
-      u128 s = (u128)w[k] + carry;
-      w[k] = (u64)s;
-      carry = (u64)(s >> 64);
-      ++k;
-    }
-    if (word < lo) lo = word;
-    if (k - 1 > hi) hi = k - 1;
-  }
-};
-
-inline int compare4(const Acc4& P, const Acc4& N) {
-  int top = P.hi > N.hi ? P.hi : N.hi;
-  int bot = P.lo < N.lo ? P.lo : N.lo;
-  for (int k = top; k >= bot && k >= 0; --k) {
-    if (P.w[k] != N.w[k]) return P.w[k] > N.w[k] ? 1 : -1;
-  }
-  return 0;
-}
+using Acc4 = FixedAcc<ACC4_EMIN, ACC4_WORDS>;
 
 // P or N += (a b c d), exactly
 inline void add_product4(Acc4& P, Acc4& N, double a, double b, double c, double d, bool negate) {
@@ -332,7 +304,7 @@ inline void add_product4(Acc4& P, Acc4& N, double a, double b, double c, double 
   t = (t >> 64) + (p3 >> 64);
   v[3] = (u64)t;
   bool neg = ((ua.neg != ub.neg) != (uc.neg != ud.neg)) != negate;
-  (neg ? N : P).add(v, ua.e + ub.e + uc.e + ud.e);
+  (neg ? N : P).add_words(v, ua.e + ub.e + uc.e + ud.e);
 }
 
 }  // namespace detail
@@ -359,7 +331,7 @@ inline int incircle_exact(double ax, double ay, double bx, double by, double cx,
       detail::add_product4(P, N, X[i], Y[j], Y[k], Y[k], neg);
     }
   }
-  return detail::compare4(P, N);
+  return detail::compare(P, N);
 }
 
 // Filtered in-circle sign (Shewchuk's incircle, stage A), exact for all finite doubles.

@@ -173,11 +173,13 @@ inline int in_range(const Dir& u, const Dir& v, const Dir& d, bool start_open) {
   return 0;  // straight on (collinear vertex): no turn
 }
 
-// Convolution segments of ring R (edges) with ring S (vertices), appended as edges.
-inline void conv_pair(Geo& g, const Ring& R, const Ring& S, bool start_open,
-                      std::vector<EdgeIn>& out) {
+// The convolution's walk over ring R (edges) and ring S (vertices): f(i, j, s) for every
+// edge i of R in the cone of vertex j of S (s: in_range's side); f returns false to stop
+// (then so does the walk: false).
+template <class F>
+inline bool conv_ring_walk(const Ring& R, const Ring& S, bool start_open, F&& f) {
   const i64 n = R.n(), m = S.n();
-  if (n < 2 || m < 1) return;
+  if (n < 2 || m < 1) return true;
   for (i64 j = 0; j < m; ++j) {
     i64 jp = (j + m - 1) % m, jn = (j + 1) % m;
     Dir u{S.x(jp), S.y(jp), S.x(j), S.y(j)}, v{S.x(j), S.y(j), S.x(jn), S.y(jn)};
@@ -186,35 +188,49 @@ inline void conv_pair(Geo& g, const Ring& R, const Ring& S, bool start_open,
       i64 in = (i + 1) % n;
       Dir d{R.x(i), R.y(i), R.x(in), R.y(in)};
       int s = in_range(u, v, d, start_open);
-      if (!s) continue;
-      i64 a = g.point(ov::dd_sum(R.x(i), S.x(j)), ov::dd_sum(R.y(i), S.y(j)));
-      i64 b = g.point(ov::dd_sum(R.x(in), S.x(j)), ov::dd_sum(R.y(in), S.y(j)));
-      if (ov::p_eq(g.pts[a], g.pts[b])) continue;
-      i64 l = g.line(a, b);
-      i64 va = g.vert_point(a), vb = g.vert_point(b);
-      if (s > 0)
-        out.push_back(EdgeIn{l, va, vb, 1, 0});
-      else
-        out.push_back(EdgeIn{l, vb, va, 1, 0});
+      if (s && !f(i, j, s)) return false;
     }
   }
+  return true;
 }
 
-// The full convolution of two operands: of every polygon of A with every polygon of B,
-// after filling the holes of each that the other cannot fit into. Then the winding
-// number around x is the sum over the pairs of the number of components of
-// P_k ∩ (x − Q_l): at least 1 exactly where x is in A ⊕ B.
-inline void convolution(Geo& g, const std::vector<Polygon>& A, const std::vector<Polygon>& B,
-                        std::vector<EdgeIn>& out) {
+// The full convolution's walk of two operands: of every polygon of A with every polygon
+// of B, after filling the holes of each that the other cannot fit into (conv_rings);
+// f(R, S, i, j, s) per segment (edge i of R at vertex j of S), false to stop.
+template <class F>
+inline void conv_walk(const std::vector<Polygon>& A, const std::vector<Polygon>& B, F&& f) {
   for (const Polygon& p : A)
     for (const Polygon& q : B) {
       std::vector<const Ring*> ra = conv_rings(p, ring_box(q.ext)), rb = conv_rings(q, ring_box(p.ext));
       for (const Ring* r : ra)
-        for (const Ring* s : rb) {
-          conv_pair(g, *r, *s, true, out);   // edges of A at vertices of B
-          conv_pair(g, *s, *r, false, out);  // edges of B at vertices of A
+        for (const Ring* t : rb) {
+          // edges of A at vertices of B, then edges of B at vertices of A
+          if (!conv_ring_walk(*r, *t, true, [&](i64 i, i64 j, int s) { return f(*r, *t, i, j, s); }))
+            return;
+          if (!conv_ring_walk(*t, *r, false, [&](i64 i, i64 j, int s) { return f(*t, *r, i, j, s); }))
+            return;
         }
     }
+}
+
+// The full convolution of two operands as overlay edges. The winding number around x is
+// the sum over the polygon pairs of the number of components of P_k ∩ (x − Q_l): at
+// least 1 exactly where x is in A ⊕ B.
+inline void convolution(Geo& g, const std::vector<Polygon>& A, const std::vector<Polygon>& B,
+                        std::vector<EdgeIn>& out) {
+  conv_walk(A, B, [&](const Ring& R, const Ring& S, i64 i, i64 j, int s) {
+    const i64 in = (i + 1) % R.n();
+    i64 a = g.point(ov::dd_sum(R.x(i), S.x(j)), ov::dd_sum(R.y(i), S.y(j)));
+    i64 b = g.point(ov::dd_sum(R.x(in), S.x(j)), ov::dd_sum(R.y(in), S.y(j)));
+    if (ov::p_eq(g.pts[a], g.pts[b])) return true;
+    i64 l = g.line(a, b);
+    i64 va = g.vert_point(a), vb = g.vert_point(b);
+    if (s > 0)
+      out.push_back(EdgeIn{l, va, vb, 1, 0});
+    else
+      out.push_back(EdgeIn{l, vb, va, 1, 0});
+    return true;
+  });
 }
 
 // All rings of an operand as overlay edges (weight 1: winding 1 inside each polygon),
@@ -268,21 +284,9 @@ inline void segment_sum(Geo& g, const std::vector<Polygon>& A, double s0x, doubl
 // rings of exact vertices, one part each.
 inline int piece_sums(Geo& g, const double* pa, const i64* oa, i64 na, const double* pb,
                       const i64* ob, i64 nb, std::vector<std::vector<EdgeIn>>& parts) {
-  std::vector<Norm> NA(na), NB(nb);
-  i64 big = 1;
-  for (i64 k = 0; k < na; ++k) big = std::max(big, oa[k + 1] - oa[k]);
-  for (i64 k = 0; k < nb; ++k) big = std::max(big, ob[k + 1] - ob[k]);
-  std::vector<i64> keep(big);
-  std::vector<std::int8_t> turn(big);
-  std::vector<i64> ia(oa[na] > 0 ? oa[na] : 1), ib(ob[nb] > 0 ? ob[nb] : 1);
-  for (i64 k = 0; k < na; ++k) {
-    NA[k] = normalize(pa, oa[k], oa[k + 1], keep.data(), turn.data(), ia.data() + oa[k]);
-    if (NA[k].code) return NA[k].code;
-  }
-  for (i64 k = 0; k < nb; ++k) {
-    NB[k] = normalize(pb, ob[k], ob[k + 1], keep.data(), turn.data(), ib.data() + ob[k]);
-    if (NB[k].code) return NB[k].code;
-  }
+  PiecePair pp;
+  if (int code = normalize_pieces(pa, oa, na, pb, ob, nb, pp)) return code;
+  const std::vector<Norm>&NA = pp.A, &NB = pp.B;
   for (i64 k = 0; k < na; ++k)
     for (i64 l = 0; l < nb; ++l) {
       i64 first = (i64)g.pts.size();
@@ -355,29 +359,7 @@ inline i64 vertex_count(const std::vector<Polygon>& P) {
 // The number of convolution segments (stops counting above limit).
 inline i64 conv_count(const std::vector<Polygon>& A, const std::vector<Polygon>& B, i64 limit) {
   i64 cnt = 0;
-  auto pair = [&](const Ring& R, const Ring& S, bool start_open) {
-    const i64 n = R.n(), m = S.n();
-    if (n < 2 || m < 1) return;
-    for (i64 j = 0; j < m && cnt <= limit; ++j) {
-      i64 jp = (j + m - 1) % m, jn = (j + 1) % m;
-      Dir u{S.x(jp), S.y(jp), S.x(j), S.y(j)}, v{S.x(j), S.y(j), S.x(jn), S.y(jn)};
-      if (cr(u, v) == 0) continue;
-      for (i64 i = 0; i < n; ++i) {
-        i64 in = (i + 1) % n;
-        Dir d{R.x(i), R.y(i), R.x(in), R.y(in)};
-        if (in_range(u, v, d, start_open)) ++cnt;
-      }
-    }
-  };
-  for (const Polygon& p : A)
-    for (const Polygon& q : B) {
-      std::vector<const Ring*> ra = conv_rings(p, ring_box(q.ext)), rb = conv_rings(q, ring_box(p.ext));
-      for (const Ring* r : ra)
-        for (const Ring* s : rb) {
-          pair(*r, *s, true);
-          pair(*s, *r, false);
-        }
-    }
+  conv_walk(A, B, [&](const Ring&, const Ring&, i64, i64, int) { return ++cnt <= limit; });
   return cnt;
 }
 

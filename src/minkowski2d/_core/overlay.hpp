@@ -135,6 +135,17 @@ struct Vert {
   FE x, y;     // approximation
 };
 
+// A box holding the exact positions of two vertices: their approximations widened by
+// their bounds, rounded outwards (one ulp beyond, so a DD point next to it tests safely).
+inline void widened_box(const Vert& a, const Vert& b, double& x0, double& x1, double& y0,
+                        double& y1) {
+  const double up = 1 + 0x1p-50;
+  x0 = next_down(std::min(a.x.v - a.x.e * up, b.x.v - b.x.e * up));
+  x1 = next_up(std::max(a.x.v + a.x.e * up, b.x.v + b.x.e * up));
+  y0 = next_down(std::min(a.y.v - a.y.e * up, b.y.v - b.y.e * up));
+  y1 = next_up(std::max(a.y.v + a.y.e * up, b.y.v + b.y.e * up));
+}
+
 class Geo {
  public:
   std::vector<P> pts;
@@ -492,13 +503,7 @@ class Overlay {
   }
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
-    arrange(in, rule);
-    if (over_) {
-      out.clear();
-      out.status = RESOURCE;
-      return;
-    }
-    trace(out);
+    run_raw(in, rule, out);
     if (out.status == OK) finish_rounded(out);
   }
   // as run, without the check after rounding (the check's own re-run uses it)
@@ -887,7 +892,6 @@ class Overlay {
     by0_.resize(n);
     by1_.resize(n);
     grp_.resize(n);
-    const double up = 1 + 0x1p-50;
     for (i64 i = 0; i < n; ++i) {
       const Vert &a = g_.verts[vg_[ed_[i].v0]], &b = g_.verts[vg_[ed_[i].v1]];
       grp_[i] = ed_[i].group;
@@ -899,15 +903,7 @@ class Overlay {
         by1_[i] = std::max(a.y.v, b.y.v);
         continue;
       }
-      // boxes hold the exact vertices: widen by the bounds (rounded outwards)
-      double ax0 = a.x.v - a.x.e * up, ax1 = a.x.v + a.x.e * up;
-      double bx0 = b.x.v - b.x.e * up, bx1 = b.x.v + b.x.e * up;
-      double ay0 = a.y.v - a.y.e * up, ay1 = a.y.v + a.y.e * up;
-      double by0 = b.y.v - b.y.e * up, by1 = b.y.v + b.y.e * up;
-      bx0_[i] = next_down(std::min(ax0, bx0));
-      bx1_[i] = next_up(std::max(ax1, bx1));
-      by0_[i] = next_down(std::min(ay0, by0));
-      by1_[i] = next_up(std::max(ay1, by1));
+      widened_box(a, b, bx0_[i], bx1_[i], by0_[i], by1_[i]);  // holds the exact vertices
     }
     auto on_pair = [&](i64 i, i64 j) {
       if (n_pairs >= max_pairs) over_ = true;

@@ -560,6 +560,17 @@ Problem check_finite(const T* xy, const i64* ring_off, i64 R) {
   return Problem();
 }
 
+// The sweep of polygon p (its shell and holes) into w: the problem it finds, if any.
+template <class T>
+Problem sweep_polygon(Work<T>& w, const i64* poly_off, i64 p) {
+  for (i64 r = poly_off[p]; r < poly_off[p + 1]; ++r) {
+    Problem pr = w.add_ring(r, r == poly_off[p]);
+    if (!pr.ok()) return pr;
+  }
+  w.close_rings();
+  return w.run();
+}
+
 // Validate the polygons; orient[r] = +1 / -1 for a ring given counter-clockwise /
 // clockwise (0 where not reached), disconnected[p] for a valid polygon whose interior
 // touching rings split into parts. With check_disjoint, the polygons must also have
@@ -573,12 +584,7 @@ Problem check(const T* xy, const i64* ring_off, i64 R, const i64* poly_off, i64 
   for (i64 p = 0; p < P; ++p) {
     disconnected[p] = 0;
     Work<T> w(xy, ring_off);
-    for (i64 r = poly_off[p]; r < poly_off[p + 1]; ++r) {
-      pr = w.add_ring(r, r == poly_off[p]);
-      if (!pr.ok()) return pr;
-    }
-    w.close_rings();
-    pr = w.run();
+    pr = sweep_polygon(w, poly_off, p);
     if (!pr.ok()) return pr;
     for (i64 lr = 0; lr < w.nrings(); ++lr) orient[w.rings[lr]] = w.rorient[lr];
     disconnected[p] = w.disconnected ? 1 : 0;

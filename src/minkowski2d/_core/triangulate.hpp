@@ -284,12 +284,7 @@ Problem triangulate(const T* xy, const i64* ring_off, i64 R, const i64* poly_off
   if (!pr.ok()) return pr;
   for (i64 p = 0; p < P; ++p) {
     Work<T> w(xy, ring_off);
-    for (i64 r = poly_off[p]; r < poly_off[p + 1]; ++r) {
-      pr = w.add_ring(r, r == poly_off[p]);
-      if (!pr.ok()) return pr;
-    }
-    w.close_rings();
-    pr = w.run();
+    pr = sweep_polygon(w, poly_off, p);
     if (!pr.ok()) return pr;
     triangulate_work(w, tri, delaunay);
   }

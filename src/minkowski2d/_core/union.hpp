@@ -159,17 +159,9 @@ class BoundaryIndex {
     by1_.resize(n);
     X0_ = Y0_ = INFINITY;
     X1_ = Y1_ = -INFINITY;
-    const double up = 1 + 0x1p-50;
     for (i64 i = 0; i < n; ++i) {
-      const ov::Vert &a = g_.verts[b[i].from], &c = g_.verts[b[i].to];
-      double ax0 = a.x.v - a.x.e * up, ax1 = a.x.v + a.x.e * up;
-      double cx0 = c.x.v - c.x.e * up, cx1 = c.x.v + c.x.e * up;
-      double ay0 = a.y.v - a.y.e * up, ay1 = a.y.v + a.y.e * up;
-      double cy0 = c.y.v - c.y.e * up, cy1 = c.y.v + c.y.e * up;
-      bx0_[i] = next_down(std::min(ax0, cx0));
-      bx1_[i] = next_up(std::max(ax1, cx1));
-      by0_[i] = next_down(std::min(ay0, cy0));
-      by1_[i] = next_up(std::max(ay1, cy1));
+      ov::widened_box(g_.verts[b[i].from], g_.verts[b[i].to], bx0_[i], bx1_[i], by0_[i],
+                      by1_[i]);
       X0_ = std::min(X0_, bx0_[i]);
       X1_ = std::max(X1_, bx1_[i]);
       Y0_ = std::min(Y0_, by0_[i]);
@@ -904,26 +896,12 @@ inline int sum_pieces_union(ConvexUnion& u, const double* pa, const i64* oa, i64
                             const double* pb, const i64* ob, i64 nb, Rings& out,
                             i64* bad = nullptr) {
   out.clear();
-  std::vector<Norm> NA(na), NB(nb);
-  i64 big = 1;
-  for (i64 k = 0; k < na; ++k) big = std::max(big, oa[k + 1] - oa[k]);
-  for (i64 k = 0; k < nb; ++k) big = std::max(big, ob[k + 1] - ob[k]);
-  std::vector<i64> keep(big);
-  std::vector<std::int8_t> turn(big);
-  std::vector<i64> ia(oa[na] > 0 ? oa[na] : 1), ib(ob[nb] > 0 ? ob[nb] : 1);
-  for (i64 k = 0; k < na + nb; ++k) {
-    const bool isa = k < na;
-    const i64 q = isa ? k : k - na;
-    Norm& N = isa ? NA[q] : NB[q];
-    N = isa ? normalize(pa, oa[q], oa[q + 1], keep.data(), turn.data(), ia.data() + oa[q])
-            : normalize(pb, ob[q], ob[q + 1], keep.data(), turn.data(), ib.data() + ob[q]);
-    if (N.code) {
-      if (bad) *bad = k;
-      out.status = N.code;
-      return N.code;
-    }
+  PiecePair pp;
+  if (int code = normalize_pieces(pa, oa, na, pb, ob, nb, pp, bad)) {
+    out.status = code;
+    return code;
   }
-  SumSource src{pa, pb, &NA, &NB};
+  SumSource src{pa, pb, &pp.A, &pp.B};
   return u.unite(src, out);
 }
 
