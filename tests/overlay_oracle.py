@@ -22,6 +22,7 @@ Examples
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction as F
 
 
@@ -154,3 +155,26 @@ def boundary(rings, weights=None, layers=None, rule="union", edges_out=False):
         if _orient(u, v, w) != 0:
             verts.add(v)
     return verts, F(area)
+
+
+# --------------------------------------------------------------------------------------
+# measures of a computed result (rings as coordinates and ring offsets)
+
+
+def exact_area(xy, ro) -> F:
+    """The signed area of rings (counter-clockwise positive), exactly, at every magnitude."""
+    a = F(0)
+    for r in range(len(ro) - 1):
+        pts = [tuple(map(F, p)) for p in xy[ro[r] : ro[r + 1]].tolist()]
+        for i, p in enumerate(pts):
+            q = pts[(i + 1) % len(pts)]
+            a += (p[0] * q[1] - p[1] * q[0]) / 2
+    return a
+
+
+def ulps(p, q) -> float:
+    """How many ulps of the points' largest coordinate p and q are apart (a re-noded
+    crossing is within ulps of the data's magnitude; an ulp of a tiny coordinate next to
+    a large one is no measure of a rounding)."""
+    m = max(abs(v) for v in (*p, *q)) or 5e-324
+    return max(abs(a - b) for a, b in zip(p, q)) / math.ulp(m)

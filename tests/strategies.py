@@ -4,9 +4,19 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from hypothesis import strategies as st
 
 from . import oracle
+
+
+def regular_star(n: int, outer: float, inner: float, phase: float = 0.0) -> np.ndarray:
+    """A regular star of n vertices, radii alternating outer (even) and inner (odd), turned
+    by phase, rounded to integer values (float64)."""
+    k = np.arange(n)
+    th = 2 * np.pi * k / n + phase
+    rad = np.where(k % 2, inner, outer)
+    return np.rint(np.c_[rad * np.cos(th), rad * np.sin(th)])
 
 
 def int_points(max_size: int = 30, bound: int = 1000) -> st.SearchStrategy:

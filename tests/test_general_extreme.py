@@ -26,6 +26,7 @@ from minkowski2d.errors import (
     ShapeError,
 )
 
+from .strategies import regular_star
 from .test_general import star_ring
 
 L = [(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)]
@@ -277,10 +278,7 @@ def test_large_stars_convolution_is_refused_not_a_crash():
     # two regular 2048-vertex stars: their convolution once ran the machine out of memory
     # (the grid of candidate pairs registered every long segment in ~sqrt(n) cells); the
     # decomposition computes the sum (benchmarks/bench_general.py)
-    k = np.arange(2048)
-    th = 2 * np.pi * k / 2048
-    rad = np.where(k % 2 == 0, 10000, 5000)
-    a = np.rint(np.c_[rad * np.cos(th), rad * np.sin(th)]).astype(np.int64)
+    a = regular_star(2048, 10000, 5000).astype(np.int64)
     with pytest.raises(ResourceLimitError, match="MAX_CONVOLUTION_SEGMENTS") as e:
         mk.minkowski_sum_general(a, a, method="convolution")
     assert e.value.argument == "a, b" and e.value.hint
@@ -320,17 +318,8 @@ def test_results_scale_exactly_by_powers_of_two(ra, rb, e):
 def test_a_large_arrangement_is_refused_before_it_is_built():
     # 256-vertex stars: over a million crossings (GEOS would need many GB and minutes);
     # the bound is checked first, in seconds, with the default limits
-    k = np.arange(256)
-    th = 2 * np.pi * k / 256
-    A = np.rint(
-        np.c_[np.where(k % 2, 5000, 10000) * np.cos(th), np.where(k % 2, 5000, 10000) * np.sin(th)]
-    )
-    B = np.rint(
-        np.c_[
-            np.where(k % 2, 3000, 9000) * np.cos(th + 0.3),
-            np.where(k % 2, 3000, 9000) * np.sin(th + 0.3),
-        ]
-    )
+    A = regular_star(256, 10000, 5000)
+    B = regular_star(256, 9000, 3000, 0.3)
     with pytest.raises(ResourceLimitError, match="MAX_CROSSINGS") as e:
         mk.minkowski_sum_general(A.astype(np.int64), B.astype(np.int64), method="convolution")
     assert e.value.argument == "a, b" and "decomposition" in e.value.hint

@@ -23,6 +23,7 @@ from hypothesis import strategies as st
 
 import minkowski2d as mk
 from tests.overlay_oracle import boundary
+from tests.strategies import regular_star
 
 
 def vset(g):
@@ -173,17 +174,8 @@ def test_hole_that_fits_is_kept():
 
 
 def test_stars_both_methods():
-    k = np.arange(32)
-    th = 2 * np.pi * k / 32
-    A = np.rint(
-        np.c_[np.where(k % 2, 5000, 10000) * np.cos(th), np.where(k % 2, 5000, 10000) * np.sin(th)]
-    )
-    B = np.rint(
-        np.c_[
-            np.where(k % 2, 3000, 9000) * np.cos(th + 0.3),
-            np.where(k % 2, 3000, 9000) * np.sin(th + 0.3),
-        ]
-    )
+    A = regular_star(32, 10000, 5000)
+    B = regular_star(32, 9000, 3000, 0.3)
     gc = mk.minkowski_sum_general(A, B, method="convolution")
     gp = mk.minkowski_sum_general(A, B, method="decomposition")
     assert vset(gc) == vset(gp) and shapely.is_valid(gc)

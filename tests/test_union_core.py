@@ -14,7 +14,6 @@ stars, and the work limits must give Status RESOURCE, never a partial result.
 
 from __future__ import annotations
 
-import math
 import sys
 from fractions import Fraction
 from pathlib import Path
@@ -26,7 +25,7 @@ from hypothesis import strategies as st
 
 import minkowski2d as mk
 from minkowski2d._core import _ext
-from tests.overlay_oracle import boundary
+from tests.overlay_oracle import boundary, exact_area, ulps
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 
@@ -83,23 +82,6 @@ def flat(rings):
 
 def same(a, b):
     return all(np.array_equal(x, y) for x, y in zip(a, b))
-
-
-def ulps(p, q):
-    """Distance of two points in ulps of their largest coordinate (a re-noded crossing
-    is within ulps of the data's magnitude, not of a small coordinate)."""
-    m = max(abs(c) for c in (*p, *q)) or 5e-324
-    return max(abs(a - b) for a, b in zip(p, q)) / math.ulp(m)
-
-
-def exact_area(xy, ro):
-    a = Fraction(0)
-    for r in range(len(ro) - 1):
-        pts = [tuple(map(Fraction, p)) for p in xy[ro[r] : ro[r + 1]].tolist()]
-        for i, p in enumerate(pts):
-            q = pts[(i + 1) % len(pts)]
-            a += (p[0] * q[1] - p[1] * q[0]) / 2
-    return a
 
 
 def presented(piece, data):
