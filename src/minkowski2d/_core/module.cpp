@@ -517,6 +517,7 @@ void bind_general(nb::module_& m);    // general.cpp
 void bind_polygon(nb::module_& m);    // polygon.cpp
 void bind_union(nb::module_& m);      // union.cpp
 void bind_offset(nb::module_& m);     // offset.cpp
+void bind_nest(nb::module_& m);       // nest.cpp
 
 }  // namespace mk_bind
 
@@ -585,4 +586,5 @@ NB_MODULE(_ext, m) {
   bind_polygon(m);
   bind_union(m);
   bind_offset(m);
+  bind_nest(m);
 }

@@ -20,6 +20,7 @@ import enum
 from .._core import _ext
 from .._core._ext import (  # the kernels: the whole surface between Python and C++
     MeshPlannerF,
+    Nester,
     PlannerF,
     PlannerI,
     check_polygons_f,
@@ -61,6 +62,7 @@ __all__ = [
     "ERRBOUND",
     "MINBOUND",
     "MeshPlannerF",
+    "Nester",
     "PlannerF",
     "PlannerI",
     "check_polygons_f",

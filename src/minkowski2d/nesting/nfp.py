@@ -33,9 +33,9 @@ from typing import Any
 
 import numpy as np
 
-from ._engine import options as _options
-from ._engine.coerce import as_array, is_shapely
-from .errors import (
+from .._engine import options as _options
+from .._engine.coerce import as_array, is_shapely
+from ..errors import (
     EmptyGeometryError,
     GeometryError,
     InputFormatError,
@@ -43,7 +43,7 @@ from .errors import (
     ResourceLimitError,
     ShapeError,
 )
-from .general import convex_decomposition, minkowski_difference, minkowski_sum_general_many
+from ..general import convex_decomposition, minkowski_difference, minkowski_sum_general_many
 
 __all__ = [
     "no_fit_polygons",
@@ -483,7 +483,7 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
 
     import shapely
 
-    from ._engine import core
+    from .._engine import core
 
     del nfp  # the core finds these placements from the piece sums alone
     RA = convex_decomposition(a)
@@ -586,7 +586,7 @@ def read_esicup(path: Any) -> dict[str, Any]:
     """
     import shapely
 
-    from ._engine.foreign import foreign_errors
+    from .._engine.foreign import foreign_errors
 
     name = str(path)
     try:
