@@ -30,6 +30,7 @@ __all__ = [
     "NoPathError",
     "ResourceLimitError",
     "OptionError",
+    "LayoutError",
 ]
 
 
@@ -196,6 +197,22 @@ class NoPathError(GeometryError):
 
 class ResourceLimitError(GeometryError):
     """The computation would exceed a stated bound on work or memory."""
+
+
+class LayoutError(GeometryError):
+    """A layout fails its certificate: two parts overlap or are closer than the spacing,
+    or a part leaves its sheet or comes closer to its boundary than the margin.
+
+    ``argument`` names the placements at fault (``"placements[3], placements[7]"``, or
+    ``"placements[3]"`` for a part against its sheet).
+
+    Examples
+    --------
+    >>> e = LayoutError("placements[3], placements[7]: the interiors overlap",
+    ...                 argument="placements[3], placements[7]")
+    >>> (e.argument, e.detail)
+    ('placements[3], placements[7]', 'the interiors overlap')
+    """
 
 
 class OptionError(GeometryError, TypeError):
