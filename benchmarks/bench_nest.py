@@ -32,9 +32,10 @@ Sets (``--set``, comma-separated): ``classic`` (the 12 instances of the sparrow 
 table; its published means over 100 runs of 1200 s on 3 threads are printed alongside as
 context, not as a run of ours), ``dighe`` (jigsaws whose optimum density is 100 %),
 ``gardeyn`` (gardeyn0..9, real parts), ``sheets`` (the classic parts on fixed H x H sheets,
-H the instance's strip height, spacing 1 % and margin 2 % of H: sheets used against the
-lower bounds ceil(Σ part area / sheet area) and ceil(Σ part area / area inside the
-margins); spyrrow has no bin packing, so minkowski2d only).
+H the instance's strip height, spacing 1 % and margin 2 % of H, a stock of 2 LB + 1 sheets
+(``--stock``): sheets used against the lower bounds ceil(Σ part area / sheet area) and
+LB = ceil(Σ part area / area inside the margins); spyrrow has no bin packing, so
+minkowski2d only).
 
 Usage::
 
@@ -368,7 +369,7 @@ def strip_table(label: str, names: list, res: dict) -> list[str]:
 
 def sheets_table(names: list, res: dict) -> list[str]:
     head = [
-        "instance", "parts", "sheet", "spacing / margin", "sheets used", "LB area",
+        "instance", "parts", "sheet", "spacing / margin", "stock", "sheets used", "LB area",
         "LB inside margins", "density %", "last-sheet length", "wall / CPU s",
         "verify (exact / shapely)",
     ]  # fmt: skip
@@ -386,7 +387,7 @@ def sheets_table(names: list, res: dict) -> list[str]:
             excess.append(o["n_sheets"] - r["lb_margin"])
         cells = [
             name, str(r["parts"]), f"{num(W)} x {num(W)}",
-            f"{num(r['spacing'])} / {num(r['margin'])}",
+            f"{num(r['spacing'])} / {num(r['margin'])}", str(r["stock"]),
             str(o["n_sheets"]) if ok else "-", str(r["lb"]), str(r["lb_margin"]),
             pct(o["density"]) if ok else "-", num(o["length"]) if ok else "-",
             f"{o['wall']:.1f} / {o['cpu']:.1f}" if ok else "-", verdict(o) if ok else "-",
@@ -401,7 +402,7 @@ def sheets_table(names: list, res: dict) -> list[str]:
                 notes.append(f"{name}: minkowski2d shapely: {shapely_label(o['shapely'])}")
     if dens:
         print(
-            f"| **mean** | | | | | | | {pct(statistics.fmean(dens))} | | | |\n\n"
+            f"| **mean** | | | | | | | | {pct(statistics.fmean(dens))} | | | |\n\n"
             f"sheets above the inside-margins bound: {sum(excess)} over {len(excess)} instances"
         )
     return notes
@@ -432,6 +433,10 @@ def main() -> None:
     ap.add_argument("--sheet", type=float, default=1.0, help="sheet side, times the strip H")
     ap.add_argument("--spacing", type=float, default=0.01, help="spacing, times H")
     ap.add_argument("--margin", type=float, default=0.02, help="margin, times H")
+    ap.add_argument(
+        "--stock", type=int, default=None,
+        help="sheets available per instance (default: 2 x the inside-margins bound + 1)",
+    )  # fmt: skip
     args = ap.parse_args()
     if args.time < 1:
         ap.error("--time: at least 1 s (spyrrow takes whole seconds)")
@@ -475,11 +480,13 @@ def main() -> None:
             if s == "sheets":
                 W, sp, mg = args.sheet * H, args.spacing * H, args.margin * H
                 A = total_area(inst)
+                lbm = math.ceil(A / ((W - 2 * mg) ** 2))
+                stock = args.stock or 2 * lbm + 1
                 r.update(sheet=W, spacing=sp, margin=mg, lb=math.ceil(A / (W * W)),
-                         lb_margin=math.ceil(A / ((W - 2 * mg) ** 2)))  # fmt: skip
+                         lb_margin=lbm, stock=stock)  # fmt: skip
                 if not args.no_ours:
-                    r["ours"] = _guard(run_ours, inst, args, sheets=[(W, W)], spacing=sp,
-                                       margin=mg)  # fmt: skip
+                    r["ours"] = _guard(run_ours, inst, args, sheets=[((W, W), stock)],
+                                       spacing=sp, margin=mg)  # fmt: skip
             else:
                 if not args.no_spyrrow:
                     r["spyrrow"] = _guard(run_spyrrow, inst, args)
