@@ -41,11 +41,14 @@ from .general import (
     minkowski_sum_general_many,
 )
 from .nesting import (
+    Layout,
+    Placement,
     degenerate_placements,
     inner_fit_polygon,
     no_fit_polygons,
     pair_blocks,
     read_esicup,
+    read_layout,
     rotate_part,
 )
 from .offset import OffsetArcs, offset, offset_arcs
@@ -94,6 +97,9 @@ __all__ = [
     "read_esicup",
     "pair_blocks",
     "rotate_part",
+    "Layout",
+    "Placement",
+    "read_layout",
     "intersects",
     "distance",
     "penetration",

@@ -10,6 +10,8 @@ matplotlib (the ``plot`` extra) is imported when something is drawn, never by
 * a :class:`~minkowski2d.MergeTrace`: its operands, faint, and the sum's edges coloured by
   the polygon they come from (A, B, or both for a parallel pair), numbered in merge
   order;
+* a nesting :class:`~minkowski2d.Layout`: its sheets side by side, outlined (keep-out
+  zones hatched), the parts filled in one colour per part (``**kwargs`` style the parts);
 * anything with a ``_plot_(ax, **kwargs)`` method (planner scenes and paths, offsets with
   arcs, ...): ``plot`` hands it the Axes; that is how other classes plug in.
 
@@ -70,7 +72,7 @@ def plot(obj: Any, ax: Any = None, **kwargs: Any) -> Any:
     Parameters
     ----------
     obj : polygon, Ragged, list of polygons, shapely geometry, GeoSeries, MergeTrace,
-        or an object with a ``_plot_(ax, **kwargs)`` method
+        Layout, or an object with a ``_plot_(ax, **kwargs)`` method
         What to draw (see the module docs).
     ax : matplotlib Axes, optional
         Where to draw; a new figure's Axes by default.
@@ -96,6 +98,7 @@ def plot(obj: Any, ax: Any = None, **kwargs: Any) -> Any:
         ax = _axes(ax)
         res = method(obj, ax, **kwargs)
         return _finish(res if res is not None else ax)
+    from .nesting.layout import Layout
     from .trace import MergeTrace
 
     if isinstance(obj, MergeTrace):
@@ -104,6 +107,10 @@ def plot(obj: Any, ax: Any = None, **kwargs: Any) -> Any:
         _trace(obj, ax, **kwargs)
         if new:
             ax.figure.tight_layout()
+        return _finish(ax)
+    if isinstance(obj, Layout):
+        ax = _axes(ax)
+        _layout(obj, ax, **kwargs)
         return _finish(ax)
     ax = _axes(ax)
     for g in _geometries(obj):
@@ -256,6 +263,50 @@ def _trace(t: Any, ax: Any, **kw: Any) -> None:
     ax.plot(*_fl(t.start), "o", color="black", ms=4)
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8, borderaxespad=0)
     ax.set_title(kw.pop("title", "merge of the edges of A and B, by angle"), fontsize=10)
+
+
+# --------------------------------------------------------------------------------------
+# a nesting layout
+
+
+def _layout(lay: Any, ax: Any, **kw: Any) -> None:
+    """The sheets side by side, outlined (keep-out zones grey, hatched), the parts filled
+    in one colour per part (a legend of the part ids when there are at most 12); the
+    offsets and colours of :mod:`minkowski2d.nesting.drawing` (the SVG's)."""
+    import shapely
+
+    from .nesting import drawing as dr
+
+    sheets, polys = dr.side_by_side(lay)
+    edge = {"edgecolor": dr.SHEET_EDGE, "alpha": 1.0, "linewidth": 1.2, "zorder": 0}
+    keepout = {"facecolor": dr.KEEPOUT_FILL, "edgecolor": "#777777", "alpha": 1.0}
+    keepout.update(linewidth=0.8, hatch="//", zorder=0.5)
+    for k, s in enumerate(sheets):
+        _draw_geom(shapely.Polygon(s.exterior), ax, facecolor=dr.SHEET_FILL, **edge)
+        for ring in s.interiors:
+            _draw_geom(shapely.Polygon(ring), ax, **keepout)
+        if lay.strip_height is None:
+            text = f"sheet {k}: {100 * lay.densities[k]:.1f} %"
+            xy = s.bounds[:2]
+            ax.annotate(text, xy, textcoords="offset points", xytext=(0, -12), fontsize=8)
+    style = {"edgecolor": dr.PART_EDGE, "alpha": 0.85, "linewidth": 0.6}
+    style.update(kw)
+    legend = "label" not in kw and len({p.part for p in lay.placements}) <= 12
+    seen: set = set()
+    for p, g in zip(lay.placements, polys, strict=True):
+        st = {"facecolor": dr.part_color(p.part), **style}
+        if legend and p.part not in seen:
+            st["label"] = lay.ids[p.part]
+            seen.add(p.part)
+        _draw_geom(g, ax, **st)
+        style.pop("label", None)  # a label of the caller's: the first part only
+    if legend and seen:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8, borderaxespad=0)
+    if lay.strip_height is not None:
+        where = f"strip {lay.length:g} x {lay.strip_height:g}"
+    else:
+        where = f"{lay.n_sheets} sheet{'s' if lay.n_sheets != 1 else ''}"
+    ax.set_title(f"{where}, density {100 * lay.density:.1f} %", fontsize=10)
 
 
 # the module is callable: ``mk.plot(obj)`` works even once ``mk.plot`` is this module

@@ -6,6 +6,7 @@
 certificate every returned layout passes.
 """
 
+from .layout import Layout, Placement, read_layout
 from .nfp import (
     MAX_PAIRS,
     degenerate_placements,
@@ -24,4 +25,7 @@ __all__ = [
     "pair_blocks",
     "rotate_part",
     "MAX_PAIRS",
+    "Layout",
+    "Placement",
+    "read_layout",
 ]
