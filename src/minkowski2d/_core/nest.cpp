@@ -36,7 +36,9 @@ class Nester {
  public:
   Nester(In1<double> box, In1<double> ref, In2<double> xy, In1<i64> ring_off, In1<i64> nring,
          In1<double> nbox, In1<i64> ots, In1<i64> ots_off, In1<std::uint8_t> fixed,
-         In1<double> width, In1<double> height, double margin, double grid) {
+         In1<double> width, In1<double> height, double margin, double grid,
+         bool int_vertices) {
+    P.int_vertices = int_vertices;
     P.n_ot = (int)ref.shape(0);
     P.box = vec(box);
     P.ref = vec(ref);
@@ -134,6 +136,31 @@ class Nester {
   }
 
   void clear_pool() { pool.clear(); }
+
+  // Place the items of `order` (not placed yet: bin -1 in the stored layout) one by one
+  // (Search::insert_lbf). Returns the index in `order` of the first item no bin had
+  // room for, or -1 when all are placed; the stored layout keeps what was placed.
+  i64 construct(In1<i64> order, std::uint64_t seed, int samples) {
+    mk::nest::Search s(P, prm, seed);
+    s.S = best;
+    s.set_pad();
+    const i64 n = (i64)order.shape(0);
+    i64 failed = -1;
+    {
+      nb::gil_scoped_release nogil;
+      for (i64 k = 0; k < n; ++k) {
+        const i64 i = order.data()[k];
+        if (i < 0 || i >= P.n_items || s.S.bin[(std::size_t)i] >= 0) continue;
+        if (!s.insert_lbf((int)i, 0, samples)) {
+          failed = k;
+          break;
+        }
+        s.S.bins_used = std::max(s.S.bins_used, s.S.bin[(std::size_t)i] + 1);
+      }
+    }
+    best = s.S;
+    return failed;
+  }
 
   // Overlap (unweighted) of item i placed at (b, ot, x, y) with the stored layout's items
   // of bin b (items of bin -1 are not placed yet): 0 when no NFP holds it strictly inside.
@@ -233,17 +260,18 @@ void bind_nest(nb::module_& m) {
   nb::class_<Nester>(m, "Nester")
       .def(nb::init<In1<double>, In1<double>, In2<double>, In1<i64>, In1<i64>, In1<double>,
                     In1<i64>, In1<i64>, In1<std::uint8_t>, In1<double>, In1<double>, double,
-                    double>(),
+                    double, bool>(),
            "box"_a.noconvert(), "ref"_a.noconvert(), "xy"_a.noconvert(),
            "ring_off"_a.noconvert(), "nring"_a.noconvert(), "nbox"_a.noconvert(),
            "ots"_a.noconvert(), "ots_off"_a.noconvert(), "fixed"_a.noconvert(),
-           "width"_a.noconvert(), "height"_a.noconvert(), "margin"_a, "grid"_a)
+           "width"_a.noconvert(), "height"_a.noconvert(), "margin"_a, "grid"_a, "int_vertices"_a)
       .def("set_params", &Nester::set_params)
       .def("set_state", &Nester::set_state, "bin"_a.noconvert(), "ot"_a.noconvert(),
            "x"_a.noconvert(), "y"_a.noconvert(), "length"_a.noconvert(), "bins_used"_a)
       .def("state", &Nester::state)
       .def("overlap", &Nester::overlap)
       .def("clear_pool", [](Nester& n) { n.clear_pool(); })
+      .def("construct", &Nester::construct, "order"_a.noconvert(), "seed"_a, "samples"_a)
       .def("probe", &Nester::probe, "item"_a, "bin"_a, "ot"_a, "x"_a, "y"_a)
       .def("attempt", &Nester::attempt, "mode"_a, "length"_a, "seed"_a, "threads"_a,
            "seconds"_a);

@@ -55,6 +55,7 @@ struct Problem {
   std::vector<double> width, height;  // full size of each bin
   double margin = 0;                  // every part this far inside its bin's rectangle
   double grid = 0;                    // translations are multiples of grid
+  bool int_vertices = false;          // touch only at NFP vertices with integer coordinates
 };
 
 // Build the slab index of every NFP entry.
@@ -98,10 +99,10 @@ struct State {
 };
 
 struct Params {
-  int container_samples = 48;
-  int focus_samples = 24;
+  int container_samples = 50;
+  int focus_samples = 25;
   int vertex_samples = 16;
-  int refine_top = 2;
+  int refine_top = 3;
   int max_strikes = 3;
   int max_no_improve = 40;
   long long max_rounds = 4000;  // rounds of moves per separation (an iteration budget)
@@ -342,29 +343,41 @@ class Search {
     return true;
   }
 
+  // Coordinate descent from c: each step tries both ways along one axis (horizontal,
+  // vertical or a diagonal), keeps the better when it is no worse, grows that axis's step
+  // on success, halves it and draws another axis on failure; stops when both steps are
+  // below the limit.
   void refine(int i, Cand& c) {
     const double r = P.ref[(std::size_t)c.ot];
-    double step = 0.25 * r;
-    const double min_step = std::max(prm.min_step_rel * r, 4 * P.grid);
-    static const int dx[8] = {1, -1, 0, 0, 1, 1, -1, -1};
-    static const int dy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
-    int guard = 0;
-    while (step > min_step && c.cost > 0 && guard++ < 200) {
+    double sx = 0.25 * r, sy = 0.25 * r;
+    const double limit = std::max(prm.min_step_rel * r, 4 * P.grid);
+    int axis = pick(4);
+    for (int guard = 0; (sx >= limit || sy >= limit) && c.cost > 0 && guard < 400; ++guard) {
+      const double ux = axis == 1 ? 0.0 : sx, uy = axis == 0 ? 0.0 : (axis == 3 ? -sy : sy);
       Cand best = c;
-      for (int d = 0; d < 8; ++d) {
-        double x = c.x + dx[d] * step, y = c.y + dy[d] * step;
+      bool moved = false;
+      for (int sgn = -1; sgn <= 1; sgn += 2) {
+        double x = c.x + sgn * ux, y = c.y + sgn * uy;
         if (!clamp_into(c.ot, c.b, x, y)) continue;
         x = snap(x);
         y = snap(y);
+        if (x == c.x && y == c.y) continue;
         double cost = eval(i, c.b, c.ot, x, y, best.cost);
-        if (cost < best.cost) best = Cand{c.b, c.ot, x, y, cost};
+        if (cost <= best.cost) {
+          if (cost < best.cost || !moved) best = Cand{c.b, c.ot, x, y, cost};
+          moved = true;
+        }
       }
-      if (best.cost < c.cost) {
-        c = best;
-        step *= 1.2;
-      } else {
-        step *= 0.5;
+      const bool better = best.cost < c.cost;
+      if (moved) c = best;
+      const double m = better ? 1.1 : 0.5;
+      if (axis == 0) sx *= m;
+      else if (axis == 1) sy *= m;
+      else {
+        sx *= std::sqrt(m);
+        sy *= std::sqrt(m);
       }
+      if (!better) axis = pick(4);
     }
   }
 
@@ -412,6 +425,7 @@ class Search {
       if (r0 == r1) continue;
       const i64 v0 = P.ring_off[(std::size_t)r0], v1 = P.ring_off[(std::size_t)r1];
       const i64 v = v0 + pick((int)(v1 - v0));
+      if (!exact_vertex(v)) continue;
       double x = S.x[(std::size_t)j] + P.xy[2 * (std::size_t)v];
       double y = S.y[(std::size_t)j] + P.xy[2 * (std::size_t)v + 1];
       double x0, y0, x1, y1;
@@ -517,6 +531,105 @@ class Search {
         update_item(i);
       }
     }
+  }
+
+  // A vertex the search may touch at: with int_vertices, one with integer coordinates
+  // (a sum of two vertices, exact; a crossing of two edges is rounded).
+  bool exact_vertex(i64 v) const {
+    if (!P.int_vertices) return true;
+    const double x = P.xy[2 * (std::size_t)v], y = P.xy[2 * (std::size_t)v + 1];
+    return x == std::nearbyint(x) && y == std::nearbyint(y);
+  }
+
+  // ---- construction -------------------------------------------------------------
+
+  // Left-bottom cost of item i at (b, ot, x, y): where its box ends on the right, then
+  // its height; infinite when it overlaps a placed item (exact test on the NFPs).
+  double lbf_cost(int i, int b, int ot, double x, double y) const {
+    if (eval(i, b, ot, x, y, 0.0) > 0) return std::numeric_limits<double>::infinity();
+    const double* bx = &P.box[4 * (std::size_t)ot];
+    return (x + bx[2]) + 1e-3 * (y + bx[1]);
+  }
+
+  // Place item i (not placed yet: bin -1) on the first bin, from `first`, where a
+  // sampled free position is found, at the free position that ends furthest left
+  // (samples over the bin, at the vertices of NFPs with the placed items, and the
+  // corner right of everything), refined by coordinate descent. False when no bin has
+  // room that the samples find.
+  bool insert_lbf(int i, int first, int samples) {
+    const i64 o0 = P.ots_off[(std::size_t)i], o1 = P.ots_off[(std::size_t)i + 1];
+    const int nots = (int)(o1 - o0);
+    for (int b = first; b < P.n_bins; ++b) {
+      Cand best{b, -1, 0, 0, std::numeric_limits<double>::infinity()};
+      auto try_at = [&](int ot, double x, double y) {
+        double x0, y0, x1, y1;
+        if (!ifp(ot, b, S.length[(std::size_t)b], x0, y0, x1, y1)) return;
+        x = snap(std::min(std::max(x, x0), x1));
+        y = snap(std::min(std::max(y, y0), y1));
+        // cheap bound first: a candidate that ends further right cannot win
+        const double* bx = &P.box[4 * (std::size_t)ot];
+        if ((x + bx[2]) + 1e-3 * (y + bx[1]) >= best.cost) return;
+        double c = lbf_cost(i, b, ot, x, y);
+        if (c < best.cost) best = Cand{b, ot, x, y, c};
+      };
+      // right of everything placed in this bin
+      double frontier = 0;
+      for (int j = 0; j < P.n_items; ++j)
+        if (S.bin[(std::size_t)j] == b)
+          frontier = std::max(frontier, S.x[(std::size_t)j] + P.box[4 * (std::size_t)S.ot[(std::size_t)j] + 2]);
+      for (int q = 0; q < nots; ++q) {
+        int ot = (int)P.ots[(std::size_t)(o0 + q)];
+        const double* bx = &P.box[4 * (std::size_t)ot];
+        try_at(ot, frontier - bx[0] + pad, -1e300);
+        try_at(ot, -1e300, -1e300);
+      }
+      for (int s = 0; s < samples; ++s) {
+        int ot = (int)P.ots[(std::size_t)(o0 + pick(nots))];
+        double x0, y0, x1, y1;
+        if (!ifp(ot, b, std::min(S.length[(std::size_t)b], frontier + 2 * P.ref[(std::size_t)ot] + P.box[4 * (std::size_t)ot + 2] - P.box[4 * (std::size_t)ot]), x0, y0, x1, y1)) continue;
+        if (s % 2 == 0) {
+          try_at(ot, uni(x0, x1), uni(y0, y1));
+          continue;
+        }
+        // a vertex of the NFP with a placed item of this bin
+        int j = pick(P.n_items);
+        if (S.bin[(std::size_t)j] != b) continue;
+        const i64 k = (i64)S.ot[(std::size_t)j] * P.n_ot + ot;
+        const i64 r0 = P.nring[(std::size_t)k], r1 = P.nring[(std::size_t)k + 1];
+        if (r0 == r1) continue;
+        const i64 v0 = P.ring_off[(std::size_t)r0], v1 = P.ring_off[(std::size_t)r1];
+        const i64 v = v0 + pick((int)(v1 - v0));
+        if (!exact_vertex(v)) continue;
+        try_at(ot, S.x[(std::size_t)j] + P.xy[2 * (std::size_t)v], S.y[(std::size_t)j] + P.xy[2 * (std::size_t)v + 1]);
+      }
+      if (best.ot < 0) continue;
+      // coordinate descent on the left-bottom cost (moves left and down until blocked)
+      double step = 0.25 * P.ref[(std::size_t)best.ot];
+      const double limit = std::max(prm.min_step_rel * P.ref[(std::size_t)best.ot], 4 * P.grid);
+      static const int DX[4] = {-1, 0, -1, 1}, DY[4] = {0, -1, -1, -1};
+      while (step >= limit) {
+        bool moved = false;
+        for (int d = 0; d < 4; ++d) {
+          Cand c = best;
+          double x = c.x + DX[d] * step, y = c.y + DY[d] * step;
+          if (!clamp_into(c.ot, b, x, y)) continue;
+          x = snap(x);
+          y = snap(y);
+          double cost = lbf_cost(i, b, c.ot, x, y);
+          if (cost < best.cost) {
+            best = Cand{b, c.ot, x, y, cost};
+            moved = true;
+          }
+        }
+        if (!moved) step *= 0.5;
+      }
+      S.bin[(std::size_t)i] = b;
+      S.ot[(std::size_t)i] = best.ot;
+      S.x[(std::size_t)i] = best.x;
+      S.y[(std::size_t)i] = best.y;
+      return true;
+    }
+    return false;
   }
 
   // Disrupt a layout: swap the places of two large items (different parts), each in an

@@ -7,6 +7,7 @@ certificate every returned layout passes.
 """
 
 from .layout import Layout, Placement, read_layout
+from .nester import nest
 from .nfp import (
     MAX_PAIRS,
     degenerate_placements,
@@ -28,4 +29,5 @@ __all__ = [
     "Layout",
     "Placement",
     "read_layout",
+    "nest",
 ]

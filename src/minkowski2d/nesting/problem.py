@@ -75,7 +75,7 @@ class Problem:
     obstacle_items: list = field(default_factory=list)  # (bin, ot)
     grid: float = 0.0
     gap: float = 0.0
-    nfp_rings: list = field(default_factory=list)  # per table entry: list of (k, 2) arrays
+    nfps: Any = None  # NfpTable
 
 
 def _polygon(p: Any, name: str) -> Any:
@@ -96,8 +96,14 @@ def _polygon(p: Any, name: str) -> Any:
                 hint="pass each connected part as its own Polygon",
             )
         return p
-    a = as_array(p, name)
-    return shapely.Polygon(np.asarray(a, dtype=np.float64))
+    a, _ = as_array(p, name)
+    poly = shapely.Polygon(np.asarray(a, dtype=np.float64))
+    if not poly.is_valid or poly.area == 0:
+        from .._engine.overlay import overlay  # noqa: F401  (validity: the core decides)
+        from ..general import convex_decomposition
+
+        convex_decomposition(poly)  # raises the specific error for a ring that is not simple
+    return poly
 
 
 def grid_for(extent: float) -> float:
@@ -197,18 +203,45 @@ def _grown(parts: list, spacing: float) -> list:
     return [offset(p, spacing / 2) for p in parts]
 
 
-def _rings(g: Any) -> list[np.ndarray]:
-    import shapely
+class NfpTable:
+    """The no-fit polygons as flat arrays: entry k = a * n_ot + b (NFP of oriented shape a
+    fixed, b moving) has rings ``nring[k] .. nring[k + 1]``, ring r the vertices
+    ``xy[ring_off[r] : ring_off[r + 1]]`` (no closing repeat), and the box ``nbox[k]``."""
 
-    if g is None or g.is_empty:
-        return []
-    out = []
-    for p in shapely.get_parts(g):
-        if p.geom_type != "Polygon":
-            continue
-        for r in [p.exterior, *p.interiors]:
-            out.append(np.asarray(r.coords, dtype=np.float64)[:-1])
-    return out
+    def __init__(self, geoms: np.ndarray) -> None:
+        import shapely
+
+        K = len(geoms)
+        ok = np.array([g is not None and not g.is_empty for g in geoms], dtype=bool)
+        idx = np.flatnonzero(ok)
+        polys, pidx = shapely.get_parts(geoms[idx], return_index=True)
+        keep = shapely.get_type_id(polys) == 3
+        polys, pidx = polys[keep], pidx[keep]
+        rings, ridx = shapely.get_rings(polys, return_index=True)
+        coords, cidx = shapely.get_coordinates(rings, return_index=True)
+        counts = np.bincount(cidx, minlength=len(rings)) - 1  # without the closing repeat
+        last = np.cumsum(counts + 1) - 1
+        mask = np.ones(len(coords), dtype=bool)
+        mask[last] = False
+        self.xy = np.ascontiguousarray(coords[mask], dtype=np.float64)
+        self.ring_off = np.concatenate([[0], np.cumsum(counts)]).astype(np.int64)
+        entry_of_ring = idx[pidx[ridx]]
+        per_entry = np.bincount(entry_of_ring, minlength=K)
+        self.nring = np.concatenate([[0], np.cumsum(per_entry)]).astype(np.int64)
+        self.nbox = np.zeros((K, 4), dtype=np.float64)
+        if len(self.xy):
+            # per entry: the box of its first ring's vertices through its last ring's
+            starts = self.ring_off[self.nring[:-1][per_entry > 0]]
+            xs, ys = self.xy[:, 0], self.xy[:, 1]
+            sel = per_entry > 0
+            self.nbox[sel, 0] = np.minimum.reduceat(xs, starts)
+            self.nbox[sel, 1] = np.minimum.reduceat(ys, starts)
+            self.nbox[sel, 2] = np.maximum.reduceat(xs, starts)
+            self.nbox[sel, 3] = np.maximum.reduceat(ys, starts)
+
+    def rings(self, k: int) -> list[np.ndarray]:
+        ro = self.ring_off
+        return [self.xy[ro[r] : ro[r + 1]] for r in range(self.nring[k], self.nring[k + 1])]
 
 
 def build_problem(
@@ -237,6 +270,7 @@ def build_problem(
         )
         + 2 * margin
     )
+    big = 1.01 * big + 2 * margin  # room for the safety gaps
     bins, strip_h = _bins(sheets, height, big, margin)
     pb = Problem(
         list(parts), list(ids), list(quantities), list(rotations), bins, strip_h, spacing, margin
@@ -293,9 +327,29 @@ def build_problem(
     extent = max([b.width for b in bins] + [b.height for b in bins])
     extent = max(extent, float(np.abs(pb.box).max()) if len(pb.box) else 0.0)
     pb.grid = grid_for(4 * extent)
-    pb.gap = GAP * extent
-    pb.nfp_rings = _nfp_table(pb, n_part_ot, obstacles, threads)
+    pb.gap = 0.0 if _exact_data(pb, obstacles) else GAP * extent
+    pb.nfps = _nfp_table(pb, n_part_ot, obstacles, threads)
     return pb
+
+
+def _exact_data(pb: Problem, obstacles: list) -> bool:
+    """True when the NFPs' vertex sums are exact and no safety gap is needed: integer
+    coordinates (|x| < 2**40), rotations by multiples of 90 degrees, no spacing and no
+    grown keep-out zone. Their crossings are still rounded: the search then touches only
+    at NFP vertices with integer coordinates (exact sums), never at a crossing."""
+    import shapely
+
+    if pb.spacing > 0 or (pb.margin > 0 and obstacles):
+        return False
+    if any(_quarter_turns(a) is None for a in pb.ot_angle):
+        return False
+    shapes = list(pb.parts) + list(obstacles)
+    if pb.strip_height is None:
+        shapes += [b.polygon for b in pb.bins]
+    elif pb.strip_height != round(pb.strip_height):
+        return False
+    c = shapely.get_coordinates(np.array(shapes, dtype=object))
+    return bool(np.all(c == np.round(c)) and np.all(np.abs(c) < 2.0**40))
 
 
 def _same_angle(a: Any, b: Any) -> bool:
@@ -321,7 +375,7 @@ def _nfp_table(pb: Problem, n_part_ot: int, obstacles: list, threads: int) -> li
         raise exc.renamed(
             hint=(exc.hint or "") + " (while computing the no-fit polygons of the parts)"
         ) from exc
-    table: list = [[] for _ in range(n_ot * n_ot)]
+    table = np.empty(n_ot * n_ot, dtype=object)
     ot_key = {}
     for ot in range(n_ot):
         i = pb.ot_part[ot]
@@ -333,6 +387,5 @@ def _nfp_table(pb: Problem, n_part_ot: int, obstacles: list, threads: int) -> li
         ka = ot_key[a] if pb.ot_part[a] >= 0 else (n + z_of[a], 0)
         for b in range(n_part_ot):
             kb = ot_key[b]
-            g = nfps.get((ka[0], ka[1], kb[0], kb[1]))
-            table[a * n_ot + b] = _rings(g)
-    return table
+            table[a * n_ot + b] = nfps.get((ka[0], ka[1], kb[0], kb[1]))
+    return NfpTable(table)
