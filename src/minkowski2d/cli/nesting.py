@@ -279,7 +279,7 @@ def _nest_instance(args: argparse.Namespace) -> dict:
     feats = read_dxf(args.instance, tolerance=args.arc_tolerance)
     return {
         "name": Path(args.instance).stem,
-        "ids": [f.properties.get("handle", str(k)) for k, f in enumerate(feats)],
+        "ids": [(f.properties or {}).get("handle", str(k)) for k, f in enumerate(feats)],
         "parts": [f.geometry for f in feats],
         "quantities": [1] * len(feats),
         "rotations": None,

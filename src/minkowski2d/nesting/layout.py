@@ -391,7 +391,7 @@ class Layout:
         >>> import shapely, minkowski2d as mk
         >>> lay = mk.Layout([shapely.box(0, 0, 1, 1)], [mk.Placement(0, 0, 0, 0, (0.0, 0.0))],
         ...                 [shapely.box(0, 0, 1, 1)], strip_height=1)
-        >>> lay.frame()[["id", "x", "y"]].values.tolist()  # doctest: +SKIP
+        >>> lay.frame()[["id", "x", "y"]].values.tolist()
         [['0', 0.0, 0.0]]
         """
         try:

@@ -152,10 +152,10 @@ def _rotation_of(v: Any, where: str) -> Any:
 
 def _placement_of(p: Any, where: str) -> Placement:
     t = _field(p, "translation", where, (list,))
-    fields = [_field(p, k, where, (int,)) for k in ("part", "copy", "sheet")]
+    part, copy, sheet = (_field(p, k, where, (int,)) for k in ("part", "copy", "sheet"))
     rotation = _rotation_of(p.get("rotation", 0), f"{where}.rotation")
     try:
-        return Placement(*fields, rotation, tuple(t), p.get("fixed", False))
+        return Placement(part, copy, sheet, rotation, tuple(t), p.get("fixed", False))
     except GeometryError as exc:
         raise _Bad(where, str(exc)) from None
 
