@@ -336,3 +336,65 @@ def test_grid_of_esicup_parts_passes(tmp_path):
     places[5] = (places[5][0], 0, (places[5][2][0] - 0.5, places[5][2][1]))
     lay = layout(parts, places, [shapely.box(0, 0, x, 40)], spacing=1.0)
     assert {k for k, *_ in kinds(lay)} == {"spacing"}
+
+
+# --------------------------------------------------------------------------------------
+# the filtered predicates against exact arithmetic
+
+
+MAGNITUDES = [1.0, 1e3, 0.1, 2.0**-60, 1e-300, 1e200, 2.0**189, 2.0**195]
+
+
+@st.composite
+def near_collinear(draw):
+    """Points on a line, rounded to float64, a translation added exactly (double-double
+    sums): orientations near zero at every magnitude."""
+    mag = draw(st.sampled_from(MAGNITUDES))
+    c = st.floats(-4, 4, allow_nan=False)
+    px, py, dx, dy = (draw(c) * mag for _ in range(4))
+    ks = draw(st.lists(st.floats(-3, 3, allow_nan=False), min_size=3, max_size=6))
+    pts = np.array([(px + k * dx, py + k * dy) for k in ks], np.float64)
+    tm = draw(st.sampled_from([0.0, *MAGNITUDES]))
+    t = (draw(c) * tm, draw(c) * tm)
+    return pts, t
+
+
+def _exact_pts(pts, t):
+    return [(F(x) + F(t[0]), F(y) + F(t[1])) for x, y in pts.tolist()]
+
+
+@settings(max_examples=300, deadline=None)
+@given(near_collinear())
+def test_filtered_orientation_is_exact(case):
+    pts, t = case
+    g = V._Geo([[pts]], [t], [])
+    P = _exact_pts(pts, t)
+    m = len(P)
+    idx = np.array([(i, j, k) for i in range(m) for j in range(m) for k in range(m)]).T
+    got = g.orient(idx[0], idx[1], idx[2])
+    want = [O.orient(P[i], P[j], P[k]) for i, j, k in idx.T.tolist()]
+    assert got.tolist() == want
+
+
+@settings(max_examples=300, deadline=None)
+@given(near_collinear(), st.integers(0, 2), st.sampled_from([-1, 0, 1]))
+def test_filtered_point_segment_distance_is_exact(case, which, nudge):
+    pts, t = case
+    g = V._Geo([[pts]], [t], [])
+    P = _exact_pts(pts, t)
+    a, b, c = 0, 1, 2
+    d2 = O._point_seg2(P[a], P[b], P[c])
+    if which and d2 > 0:
+        # the largest float s with s² <= d², or one ulp either side of it
+        s = math.exp((math.log(d2.numerator) - math.log(d2.denominator)) / 2)
+        while F(s) ** 2 > d2:
+            s = down(s)
+        while F(up(s)) ** 2 <= d2:
+            s = up(s)
+    else:
+        s = float(np.abs(pts).max() + 1) * 0.5
+    s = up(s) if nudge > 0 else down(s) if nudge < 0 else s
+    if not (0 < s < math.inf):
+        return
+    got = g.point_seg(np.array([a]), np.array([b]), np.array([c]), F(s))
+    assert bool(got[0]) == (d2 >= F(s) ** 2)
