@@ -38,6 +38,21 @@ __all__ = ["nest"]
 
 #: Shrink ratios of the strip in the exploration: the first step, and the smallest.
 RATIO_START = 0.02
+#: The separator's settings (_core/nest.hpp Params): samples over the container, near
+#: the part and at NFP vertices; candidates refined; strikes; rounds without improvement;
+#: rounds per separation; the least overlap penalty and the last descent step (relative
+#: to the part's size).
+SEARCH_PARAMS = {
+    "container_samples": 50,
+    "focus_samples": 25,
+    "vertex_samples": 16,
+    "refine_top": 3,
+    "max_strikes": 3,
+    "max_no_improve": 40,
+    "max_rounds": 4000,
+    "floor_rel": 0.02,
+    "min_step_rel": 5e-4,
+}
 #: Samples per part of the construction (half uniform, half NFP vertices).
 CONSTRUCT_SAMPLES = 400
 RATIO_MIN = 0.001
@@ -46,6 +61,9 @@ MAX_RETRIES = 8
 #: The share of the budget spent exploring; the rest compresses by ratios shrinking
 #: (geometrically, with the time) through COMPRESS_RANGE, reverting on failure.
 EXPLORE_SHARE = 0.8
+#: Sheets: after three failures to empty the last sheet, one more try every this many
+#: attempts (the others shrink the last sheet's used length).
+CLOSE_EVERY = 6
 #: The share of the budget kept for the final exact compaction.
 COMPACT_SHARE = 0.05
 COMPRESS_RANGE = (0.0005, 0.00001)
@@ -142,7 +160,7 @@ def _engine(pb: Problem) -> Any:
         ots.append(ot)
         fixed.append(1)
         ots_off.append(len(ots))
-    return core.Nester(
+    eng = core.Nester(
         np.ascontiguousarray(pb.box.reshape(-1), np.float64),
         np.ascontiguousarray(ref, np.float64),
         T.xy,
@@ -158,6 +176,8 @@ def _engine(pb: Problem) -> Any:
         float(pb.grid),
         pb.gap == 0,
     )
+    eng.set_params(*SEARCH_PARAMS.values())
+    return eng
 
 
 class _Sol:
@@ -549,27 +569,9 @@ def nest(
             argument="height" if sheets is None else "sheets",
             allowed="height=H for a strip, or sheets=[(W, H), ...]",
         )
-    spacing = _nonneg(spacing, "spacing")
-    margin = _nonneg(margin, "margin")
-    if time_limit is not None:
-        time_limit = float(_options.real(time_limit, "time_limit"))
-        if not time_limit > 0:
-            raise OptionError(
-                f"time_limit: must be > 0, got {time_limit!r}",
-                argument="time_limit",
-                allowed="seconds > 0, or None",
-            )
-    if iterations is not None:
-        iterations = _options.integer(iterations, "iterations", 0)
-    if time_limit is None and iterations is None:
-        raise OptionError(
-            "time_limit, iterations: one of them must bound the run",
-            argument="time_limit",
-            allowed="seconds > 0, or iterations=N",
-        )
-    threads = _options.threads(threads)
-    seed = _options.integer(seed, "seed", 0)
-    _options.progress(progress)
+    spacing, margin, time_limit, iterations, threads, seed = _budget(
+        spacing, margin, time_limit, iterations, threads, seed, progress
+    )
     fixed_list = list(fixed or [])
     if sum(qty) == 0:
         raise OptionError(
@@ -591,6 +593,40 @@ def nest(
     )
     _check_fit(pb)
     deadline = math.inf if time_limit is None else t0 + time_limit
+    eng, sol = _start(pb, initial, deadline, seed, threads)
+    return _improve(
+        pb, eng, sol, deadline, iterations, threads, seed, progress, callback, name, time_limit
+    )
+
+
+def _budget(spacing, margin, time_limit, iterations, threads, seed, progress) -> tuple:
+    """The numeric options, checked (each a specific OptionError naming it)."""
+    spacing = _nonneg(spacing, "spacing")
+    margin = _nonneg(margin, "margin")
+    if time_limit is not None:
+        time_limit = float(_options.real(time_limit, "time_limit"))
+        if not time_limit > 0:
+            raise OptionError(
+                f"time_limit: must be > 0, got {time_limit!r}",
+                argument="time_limit",
+                allowed="seconds > 0, or None",
+            )
+    if iterations is not None:
+        iterations = _options.integer(iterations, "iterations", 0)
+    if time_limit is None and iterations is None:
+        raise OptionError(
+            "time_limit, iterations: one of them must bound the run",
+            argument="time_limit",
+            allowed="seconds > 0, or iterations=N",
+        )
+    threads = _options.threads(threads)
+    seed = _options.integer(seed, "seed", 0)
+    _options.progress(progress)
+    return spacing, margin, time_limit, iterations, threads, seed
+
+
+def _start(pb: Problem, initial: Any, deadline: float, seed: int, threads: int) -> tuple:
+    """The engine and the first feasible layout (the warm start, or the construction)."""
     eng = _engine(pb)
     n = len(pb.items)
     obstacle_ids = list(range(n, n + len(pb.obstacle_items)))
@@ -609,9 +645,7 @@ def nest(
                 hint="give more time, or no initial layout",
             )
         sol = _Sol.of(eng)
-    return _improve(
-        pb, eng, sol, deadline, iterations, threads, seed, progress, callback, name, time_limit
-    )
+    return eng, sol
 
 
 def _nonneg(v: Any, name: str) -> float:
@@ -711,7 +745,8 @@ def _improve(
             best.load(eng)
             last = best.used - 1
             ok = False
-            if pb.strip_height is None and best.used > 1 and fails_close < 3:
+            closing = fails_close < 3 or attempts % CLOSE_EVERY == 0
+            if pb.strip_height is None and best.used > 1 and closing:
                 ok, _ = eng.attempt(1, 0.0, s, threads, remaining)
                 if ok:
                     new = _Sol.of(eng)

@@ -184,7 +184,8 @@ def _bins(sheets: Any, height: Any, length: float, margin: float) -> tuple[list,
 
         rect = shapely.box(x0, y0, x1, y1)
         rings = [np.asarray(rect.exterior.coords)[:-1]]
-        rings += [np.asarray(r.coords)[:-1] for r in [poly.exterior, *poly.interiors]]
+        op = shapely.orient_polygons(poly)  # shell counter-clockwise, holes clockwise
+        rings += [np.asarray(r.coords)[:-1] for r in [op.exterior, *op.interiors]]
         outside = overlay(rings, layers=[0] + [1] * (len(rings) - 1), rule="difference")
         zones = [] if outside.is_empty else list(shapely.get_parts(outside))
         if margin > 0 and zones:
