@@ -51,6 +51,7 @@ from .nesting import (
     read_esicup,
     read_layout,
     rotate_part,
+    verify_layout,
 )
 from .offset import OffsetArcs, offset, offset_arcs
 from .planning import MotionPlanner, Path
@@ -102,6 +103,7 @@ __all__ = [
     "Placement",
     "read_layout",
     "nest",
+    "verify_layout",
     "intersects",
     "distance",
     "penetration",

@@ -45,8 +45,10 @@ struct Problem {
   std::vector<double> nbox;
   // a slab index per NFP entry: its box's height cut in SLABS bands, each band listing
   // the edges (a, b vertex indices into xy) whose height range meets it
-  static constexpr int SLABS = 32;
-  std::vector<i64> slab_off;   // entry k, band s: edges slab_off[k*SLABS+s] .. [+1]
+  // (bands per entry: about one per two edges, from 4 to 256)
+  std::vector<i64> slab_base;  // entry k's bands: slab_off[slab_base[k] + s]
+  std::vector<int> slab_n;     // entry k's number of bands
+  std::vector<i64> slab_off;   // band: edges slab_off[..] .. slab_off[.. + 1]
   std::vector<i64> slab_edge;  // pairs (a, b)
   int n_items = 0;
   std::vector<i64> ots, ots_off;  // allowed ots of item i: ots[ots_off[i] .. ots_off[i + 1]]
@@ -61,12 +63,17 @@ struct Problem {
 // Build the slab index of every NFP entry.
 inline void build_slabs(Problem& P) {
   const std::size_t K = P.nring.size() - 1;
-  const int S = Problem::SLABS;
-  P.slab_off.assign(K * S + 1, 0);
+  P.slab_base.assign(K, 0);
+  P.slab_n.assign(K, 1);
+  P.slab_off.assign(1, 0);
   P.slab_edge.clear();
-  std::vector<std::vector<i64>> band((std::size_t)S);
+  std::vector<std::vector<i64>> band;
   for (std::size_t k = 0; k < K; ++k) {
-    for (auto& b : band) b.clear();
+    const i64 e0 = P.ring_off[(std::size_t)P.nring[k]], e1 = P.ring_off[(std::size_t)P.nring[k + 1]];
+    const int S = (int)std::max<i64>(4, std::min<i64>(256, (e1 - e0) / 2));
+    P.slab_n[k] = S;
+    P.slab_base[k] = (i64)P.slab_off.size() - 1;
+    band.assign((std::size_t)S, {});
     const double y0 = P.nbox[4 * k + 1], y1 = P.nbox[4 * k + 3];
     const double h = (y1 - y0) / S;
     for (i64 r = P.nring[k]; r < P.nring[k + 1]; ++r) {
@@ -86,7 +93,7 @@ inline void build_slabs(Problem& P) {
     }
     for (int q = 0; q < S; ++q) {
       P.slab_edge.insert(P.slab_edge.end(), band[(std::size_t)q].begin(), band[(std::size_t)q].end());
-      P.slab_off[k * S + q + 1] = (i64)P.slab_edge.size() / 2;
+      P.slab_off.push_back((i64)P.slab_edge.size() / 2);
     }
   }
 }
@@ -153,11 +160,11 @@ class Search {
   double depth(i64 k, double tx, double ty) const {
     const double* nb = &P.nbox[4 * (std::size_t)k];
     if (!(tx > nb[0] && tx < nb[2] && ty > nb[1] && ty < nb[3])) return 0.0;
-    const int S = Problem::SLABS;
+    const int S = P.slab_n[(std::size_t)k];
     const double h = (nb[3] - nb[1]) / S;
     int q = h > 0 ? (int)std::floor((ty - nb[1]) / h) : 0;
     q = std::max(0, std::min(S - 1, q));
-    const std::size_t base = (std::size_t)k * S;
+    const std::size_t base = (std::size_t)P.slab_base[(std::size_t)k];
     const double* v = P.xy.data();
     const i64* E = P.slab_edge.data();
     bool inside = false;

@@ -8,6 +8,7 @@ certificate every returned layout passes.
 
 from .layout import Layout, Placement, read_layout
 from .nester import nest
+from .verify import Violation, verify_layout
 from .nfp import (
     MAX_PAIRS,
     degenerate_placements,
@@ -30,4 +31,6 @@ __all__ = [
     "Placement",
     "read_layout",
     "nest",
+    "verify_layout",
+    "Violation",
 ]
