@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import signal
 import sys
 from pathlib import Path
 from typing import Any
@@ -106,6 +107,9 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         raise CLIError(
             f"cannot listen on 127.0.0.1:{args.port} ({exc.strerror}); try --port 0"
         ) from None
+    # Ctrl-C stops the server even when this process was started with SIGINT ignored
+    # (a background job, nohup): the child inherits the ignored signal otherwise
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     try:
         print(f"Serving the editable animation at {srv.url}  (Ctrl-C to stop)", flush=True)
         srv.serve_forever()
