@@ -8,7 +8,6 @@ certificate every returned layout passes.
 
 from .layout import Layout, Placement, read_layout
 from .nester import nest
-from .verify import Violation, verify_layout
 from .nfp import (
     MAX_PAIRS,
     degenerate_placements,
@@ -18,6 +17,7 @@ from .nfp import (
     read_esicup,
     rotate_part,
 )
+from .verify import Violation, verify_layout
 
 __all__ = [
     "no_fit_polygons",
