@@ -350,6 +350,35 @@ class Search {
     return true;
   }
 
+  // Item i to bin b at (x, y) clamped into its inner-fit rectangle (on the grid); when
+  // its orientation does not fit the bin at all, the first allowed one that does.
+  void put_clamped(int i, int b, double x, double y) {
+    S.bin[(std::size_t)i] = b;
+    if (!clamp_into(S.ot[(std::size_t)i], b, x, y)) {
+      for (i64 q = P.ots_off[(std::size_t)i]; q < P.ots_off[(std::size_t)i + 1]; ++q)
+        if (clamp_into((int)P.ots[(std::size_t)q], b, x, y)) {
+          S.ot[(std::size_t)i] = (int)P.ots[(std::size_t)q];
+          break;
+        }
+    }
+    S.x[(std::size_t)i] = snap(x);
+    S.y[(std::size_t)i] = snap(y);
+  }
+
+  // A random touching translation of an item in orientation ot against item j: j's
+  // translation plus a vertex of NFP(ot_j, ot) that may be touched (exact_vertex).
+  bool nfp_vertex(int j, int ot, double& x, double& y) {
+    const i64 k = (i64)S.ot[(std::size_t)j] * P.n_ot + ot;
+    const i64 r0 = P.nring[(std::size_t)k], r1 = P.nring[(std::size_t)k + 1];
+    if (r0 == r1) return false;
+    const i64 v0 = P.ring_off[(std::size_t)r0], v1 = P.ring_off[(std::size_t)r1];
+    const i64 v = v0 + pick((int)(v1 - v0));
+    if (!exact_vertex(v)) return false;
+    x = S.x[(std::size_t)j] + P.xy[2 * (std::size_t)v];
+    y = S.y[(std::size_t)j] + P.xy[2 * (std::size_t)v + 1];
+    return true;
+  }
+
   // Coordinate descent from c: each step tries both ways along one axis (horizontal,
   // vertical or a diagonal), keeps the better when it is no worse, grows that axis's step
   // on success, halves it and draws another axis on failure; stops when both steps are
@@ -427,14 +456,8 @@ class Search {
       int b = S.bin[(std::size_t)j];
       if (b >= S.bins_used) continue;
       int ot = (int)P.ots[(std::size_t)(o0 + pick(nots))];
-      const i64 k = (i64)S.ot[(std::size_t)j] * P.n_ot + ot;
-      const i64 r0 = P.nring[(std::size_t)k], r1 = P.nring[(std::size_t)k + 1];
-      if (r0 == r1) continue;
-      const i64 v0 = P.ring_off[(std::size_t)r0], v1 = P.ring_off[(std::size_t)r1];
-      const i64 v = v0 + pick((int)(v1 - v0));
-      if (!exact_vertex(v)) continue;
-      double x = S.x[(std::size_t)j] + P.xy[2 * (std::size_t)v];
-      double y = S.y[(std::size_t)j] + P.xy[2 * (std::size_t)v + 1];
+      double x, y;
+      if (!nfp_vertex(j, ot, x, y)) continue;
       double x0, y0, x1, y1;
       if (!ifp(ot, b, S.length[(std::size_t)b], x0, y0, x1, y1)) continue;
       if (x < x0 || x > x1 || y < y0 || y > y1) continue;
@@ -524,17 +547,7 @@ class Search {
       // cross the new edge: reinserted at the best place found
       move_item(i, true);
       if (S.bin[(std::size_t)i] == b) {
-        double xx = S.x[(std::size_t)i], yy = S.y[(std::size_t)i];
-        if (!clamp_into(S.ot[(std::size_t)i], b, xx, yy)) {
-          // no orientation fits at all: pick any that does
-          for (i64 q = P.ots_off[(std::size_t)i]; q < P.ots_off[(std::size_t)i + 1]; ++q)
-            if (clamp_into((int)P.ots[(std::size_t)q], b, xx, yy)) {
-              S.ot[(std::size_t)i] = (int)P.ots[(std::size_t)q];
-              break;
-            }
-        }
-        S.x[(std::size_t)i] = snap(xx);
-        S.y[(std::size_t)i] = snap(yy);
+        put_clamped(i, b, S.x[(std::size_t)i], S.y[(std::size_t)i]);
         update_item(i);
       }
     }
@@ -601,13 +614,8 @@ class Search {
         // a vertex of the NFP with a placed item of this bin
         int j = pick(P.n_items);
         if (S.bin[(std::size_t)j] != b) continue;
-        const i64 k = (i64)S.ot[(std::size_t)j] * P.n_ot + ot;
-        const i64 r0 = P.nring[(std::size_t)k], r1 = P.nring[(std::size_t)k + 1];
-        if (r0 == r1) continue;
-        const i64 v0 = P.ring_off[(std::size_t)r0], v1 = P.ring_off[(std::size_t)r1];
-        const i64 v = v0 + pick((int)(v1 - v0));
-        if (!exact_vertex(v)) continue;
-        try_at(ot, S.x[(std::size_t)j] + P.xy[2 * (std::size_t)v], S.y[(std::size_t)j] + P.xy[2 * (std::size_t)v + 1]);
+        double x, y;
+        if (nfp_vertex(j, ot, x, y)) try_at(ot, x, y);
       }
       if (best.ot < 0) continue;
       // coordinate descent on the left-bottom cost (moves left and down until blocked)
@@ -679,17 +687,7 @@ class Search {
     const int ba = S.bin[(std::size_t)a], bb = S.bin[(std::size_t)b];
     auto put = [&](int i, int bin, double cx, double cy) {
       const double* bx = &P.box[4 * (std::size_t)S.ot[(std::size_t)i]];
-      double x = cx - 0.5 * (bx[0] + bx[2]), y = cy - 0.5 * (bx[1] + bx[3]);
-      S.bin[(std::size_t)i] = bin;
-      if (!clamp_into(S.ot[(std::size_t)i], bin, x, y)) {
-        for (i64 q = P.ots_off[(std::size_t)i]; q < P.ots_off[(std::size_t)i + 1]; ++q)
-          if (clamp_into((int)P.ots[(std::size_t)q], bin, x, y)) {
-            S.ot[(std::size_t)i] = (int)P.ots[(std::size_t)q];
-            break;
-          }
-      }
-      S.x[(std::size_t)i] = snap(x);
-      S.y[(std::size_t)i] = snap(y);
+      put_clamped(i, bin, cx - 0.5 * (bx[0] + bx[2]), cy - 0.5 * (bx[1] + bx[3]));
     };
     put(a, bb, bx_, by_);
     put(b, ba, ax, ay);

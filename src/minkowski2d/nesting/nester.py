@@ -455,8 +455,6 @@ class _Progress:
             from tqdm.auto import tqdm
 
             self.bar = tqdm(total=total, unit="s" if total else "it", desc="nest")
-        elif callable(progress):
-            self.cb2 = progress
         self.fn = progress if callable(progress) else None
         self.last = 0.0
 

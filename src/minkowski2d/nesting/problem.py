@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from .._engine import options as _options
-from ..errors import EmptyGeometryError, GeometryError, OptionError, ShapeError
+from ..errors import GeometryError, OptionError
 from .nfp import _quarter_turns, _rotate, no_fit_polygons
 
 __all__ = ["Problem", "Bin", "build_problem", "grid_for", "GAP"]
@@ -79,27 +79,19 @@ class Problem:
 
 
 def _polygon(p: Any, name: str) -> Any:
-    """A part as a shapely Polygon (holes kept); specific errors name the part."""
+    """A part as a shapely Polygon (holes kept); specific errors name the part. Shapely
+    input and None are read as a Layout reads them (layout._polygon); a ring is rounded
+    to float64 once and checked by the core's exact polygon test."""
     import shapely
 
     from .._engine.coerce import as_array, is_shapely
+    from .layout import _polygon as layout_polygon
 
-    if p is None:
-        raise EmptyGeometryError(f"{name}: None is not a part", argument=name)
-    if is_shapely(p):
-        if p.is_empty:
-            raise EmptyGeometryError(f"{name}: empty {p.geom_type}", argument=name)
-        if p.geom_type != "Polygon":
-            raise ShapeError(
-                f"{name}: a {p.geom_type} is not one part",
-                argument=name,
-                hint="pass each connected part as its own Polygon",
-            )
-        return p
+    if p is None or is_shapely(p):
+        return layout_polygon(p, name)
     a, _ = as_array(p, name)
     poly = shapely.Polygon(np.asarray(a, dtype=np.float64))
     if not poly.is_valid or poly.area == 0:
-        from .._engine.overlay import overlay  # noqa: F401  (validity: the core decides)
         from ..general import convex_decomposition
 
         convex_decomposition(poly)  # raises the specific error for a ring that is not simple
