@@ -96,9 +96,10 @@ def _winding(segs, z):
 
 
 RULES = {
-    "union": lambda w0, w1: w0 >= 1,
+    "union": lambda w0, w1: w0 >= 1 or w1 >= 1,
     "difference": lambda w0, w1: w0 >= 1 and w1 <= 0,
     "intersection": lambda w0, w1: w0 >= 1 and w1 >= 1,
+    "xor": lambda w0, w1: (w0 >= 1) != (w1 >= 1),
 }
 
 

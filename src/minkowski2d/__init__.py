@@ -12,6 +12,14 @@ from typing import Any
 from . import errors
 from ._version import __version__
 from .batch import Ragged, minkowski_sum_many
+from .boolean import (
+    clip_lines,
+    difference,
+    intersection,
+    symmetric_difference,
+    union,
+    union_all,
+)
 from .collision import (
     Distance,
     Penetration,
@@ -74,6 +82,12 @@ def __getattr__(name: str) -> Any:
 
 __all__ = [
     "errors",
+    "union",
+    "intersection",
+    "difference",
+    "symmetric_difference",
+    "union_all",
+    "clip_lines",
     "GeometryError",
     "Ragged",
     "minkowski_sum",

@@ -518,6 +518,7 @@ void bind_polygon(nb::module_& m);    // polygon.cpp
 void bind_union(nb::module_& m);      // union.cpp
 void bind_offset(nb::module_& m);     // offset.cpp
 void bind_nest(nb::module_& m);       // nest.cpp
+void bind_boolean(nb::module_& m);    // boolean.cpp
 
 }  // namespace mk_bind
 
@@ -587,4 +588,5 @@ NB_MODULE(_ext, m) {
   bind_union(m);
   bind_offset(m);
   bind_nest(m);
+  bind_boolean(m);
 }

@@ -402,20 +402,52 @@ class Geo {
 // ------------------------------------------------------------------------------------
 // one overlay run
 
+// A rule is an operation and a fill rule: rule = op + 4 * fill. The fill rule says which
+// winding numbers are inside one operand (layer): POSITIVE w >= 1 (valid polygons,
+// shells counter-clockwise, and the default), NONZERO w != 0, EVENODD w odd, NEGATIVE
+// w <= -1 (as Clipper and iOverlay resolve self-intersecting input). The operation
+// combines the two layers: UNION a or b, DIFFERENCE a and not b, INTERSECTION a and b,
+// XOR a or b but not both.
 enum RuleKind : int {
-  UNION = 0,         // w0 >= 1
-  DIFFERENCE = 1,    // w0 >= 1 and w1 <= 0
-  INTERSECTION = 2,  // w0 >= 1 and w1 >= 1
+  UNION = 0,
+  DIFFERENCE = 1,
+  INTERSECTION = 2,
+  XOR = 3,
 };
+enum FillRule : int {
+  FILL_POSITIVE = 0,
+  FILL_NONZERO = 1,
+  FILL_EVENODD = 2,
+  FILL_NEGATIVE = 3,
+};
+inline int make_rule(int op, int fill) { return op + 4 * fill; }
+inline bool rule_valid(int rule) { return rule >= 0 && rule < 16; }
+
+inline bool fill_inside(int fill, int w) {
+  switch (fill) {
+    case FILL_NONZERO:
+      return w != 0;
+    case FILL_EVENODD:
+      return (w & 1) != 0;
+    case FILL_NEGATIVE:
+      return w <= -1;
+    default:
+      return w >= 1;
+  }
+}
 
 inline bool rule_inside(int rule, int w0, int w1) {
-  switch (rule) {
+  const int fill = rule >> 2;
+  const bool a = fill_inside(fill, w0), b = fill_inside(fill, w1);
+  switch (rule & 3) {
     case DIFFERENCE:
-      return w0 >= 1 && w1 <= 0;
+      return a && !b;
     case INTERSECTION:
-      return w0 >= 1 && w1 >= 1;
+      return a && b;
+    case XOR:
+      return a != b;
     default:
-      return w0 >= 1;
+      return a || b;
   }
 }
 
@@ -517,6 +549,80 @@ class Overlay {
     trace(out);
   }
   void finish_rounded(Rings& out);
+
+  // Clipping polylines: `in` holds the polygons' edges (layers 0 and 1, as for `rule`)
+  // and the polylines' edges on layer 2 (any nonzero weight; they change no winding
+  // number). Keeps the parts of the polylines in the closed region the rule selects
+  // (keep_inside), or in its open complement; where a polyline runs along the region's
+  // boundary it is inside. The parts come out as polylines (rounded vertices, consecutive
+  // equal ones dropped), each following the direction of its first input edge, joined
+  // where exactly two parts meet; vertices where the part goes on along the same line are
+  // dropped. RESOURCE when the work limits stop the run.
+  int run_lines(const std::vector<EdgeIn>& in, int rule, bool keep_inside,
+                std::vector<double>& xy, std::vector<i64>& off) {
+    xy.clear();
+    off.assign(1, 0);
+    arrange(in, rule);
+    if (over_) return RESOURCE;
+    const i64 nv = (i64)av_.size();
+    std::vector<i64> kept;
+    for (i64 e = 0; e < (i64)pcs_.size(); ++e) {
+      const Piece& p = pcs_[e];
+      if (!p.nl) continue;
+      bool ib = rule_inside(rule_, p.b0, p.b1), ia = rule_inside(rule_, p.b0 + p.c0, p.b1 + p.c1);
+      if (keep_inside ? (ib || ia) : (!ib && !ia)) kept.push_back(e);
+    }
+    // incidence: kept pieces at each vertex
+    std::vector<i64> lo(nv + 1, 0);
+    for (i64 e : kept) {
+      ++lo[pcs_[e].l + 1];
+      ++lo[pcs_[e].r + 1];
+    }
+    for (i64 v = 0; v < nv; ++v) lo[v + 1] += lo[v];
+    std::vector<i64> at(lo[nv]), fill(lo.begin(), lo.end() - 1);
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+      at[fill[pcs_[kept[k]].l]++] = (i64)k;
+      at[fill[pcs_[kept[k]].r]++] = (i64)k;
+    }
+    std::vector<char> used(kept.size(), 0);
+    std::vector<i64> chain_v, chain_p;
+    auto other = [&](i64 k, i64 v) { return pcs_[kept[k]].l == v ? pcs_[kept[k]].r : pcs_[kept[k]].l; };
+    auto next_at = [&](i64 v, i64 k) -> i64 {  // the other kept piece at a vertex of degree 2
+      if (lo[v + 1] - lo[v] != 2) return -1;
+      i64 a = at[lo[v]], b = at[lo[v] + 1];
+      i64 n = a == k ? b : a;
+      return used[n] ? -1 : n;
+    };
+    auto tail_of = [&](i64 k) { return pcs_[kept[k]].ld > 0 ? pcs_[kept[k]].l : pcs_[kept[k]].r; };
+    auto walk = [&](i64 k0, i64 v0) {
+      chain_v.assign(1, v0);
+      chain_p.clear();
+      i64 k = k0, v = v0;
+      while (k >= 0) {
+        used[k] = 1;
+        v = other(k, v);
+        chain_v.push_back(v);
+        chain_p.push_back(k);
+        k = next_at(v, k);
+      }
+      emit_chain(chain_v, chain_p, kept, xy, off);
+    };
+    // open chains from their ends (vertices of degree != 2), forwards where the first
+    // piece runs away from the end; then the closed ones
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t k = 0; k < kept.size(); ++k) {
+        if (used[k]) continue;
+        const Piece& p = pcs_[kept[k]];
+        for (i64 v : {p.l, p.r}) {
+          if (used[k] || lo[v + 1] - lo[v] == 2) continue;
+          if (pass == 0 && tail_of((i64)k) != v) continue;
+          walk((i64)k, v);
+        }
+      }
+    for (std::size_t k = 0; k < kept.size(); ++k)
+      if (!used[k]) walk((i64)k, tail_of((i64)k));
+    return OK;
+  }
 
   // Lower-dimensional parts of the union of rings (layer 0, weight 1, every ring convex
   // and counter-clockwise, e.g. piece sums): points inside the regularized union that
@@ -655,6 +761,28 @@ class Overlay {
   }
 
  private:
+  // One polyline of clipped pieces: vertices chain_v (arrangement ids), pieces chain_p
+  // (indices into kept) between them; a vertex where the line goes on is dropped.
+  void emit_chain(const std::vector<i64>& cv, const std::vector<i64>& cp,
+                  const std::vector<i64>& kept, std::vector<double>& xy, std::vector<i64>& off) {
+    const std::size_t n0 = xy.size();
+    const std::size_t m = cv.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      bool inner = i > 0 && i + 1 < m;
+      if (inner && pcs_[kept[cp[i - 1]]].line == pcs_[kept[cp[i]]].line) continue;
+      double x, y;
+      g_.rounded(av_[cv[i]], x, y);
+      if (xy.size() > n0 && xy[xy.size() - 2] == x && xy[xy.size() - 1] == y) continue;
+      xy.push_back(x);
+      xy.push_back(y);
+    }
+    if (xy.size() - n0 < 4) {
+      xy.resize(n0);
+      return;
+    }
+    off.push_back((i64)(xy.size() / 2));
+  }
+
   // Is global vertex v in the interior of one of the (convex, counter-clockwise) rings?
   bool covered(const std::vector<std::vector<EdgeIn>>& rings, i64 v) const {
     const Vert& V = g_.verts[v];
@@ -711,6 +839,8 @@ class Overlay {
     int n0;         // layer-0 weight of the edges with their inside below (for
                     // degenerate(): the rings covering the piece's own points)
     i64 src = -1;   // the input edge it comes from (its line's cached points: ll_)
+    int nl = 0;     // layer-2 (line) edges along it: a piece of a clipped polyline
+    int ld = 0;     // +1: the first such line edge runs l -> r, -1: r -> l
   };
   std::vector<Piece> pcs_, bnd_;
   int rule_ = UNION;
@@ -1095,6 +1225,8 @@ class Overlay {
         int c = fwd ? e.w : -e.w;
         pc.c0 = e.layer == 0 ? c : 0;
         pc.c1 = e.layer == 1 ? c : 0;
+        pc.nl = e.layer == 2 ? 1 : 0;
+        pc.ld = e.layer == 2 ? (fwd ? 1 : -1) : 0;
         pc.b0 = pc.b1 = 0;
         raw.push_back(pc);
         prev = nxt;
@@ -1114,15 +1246,18 @@ class Overlay {
     for (std::size_t i = 0; i < pkey_.size();) {
       std::size_t j = i;
       Piece pc = raw[pkey_[i].second];
-      pc.c0 = pc.c1 = pc.n0 = 0;
+      pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.ld = 0;
       for (; j < pkey_.size() && pkey_[j].first == pkey_[i].first; ++j) {
         const Piece& q = raw[pkey_[j].second];
         pc.c0 += q.c0;
         pc.c1 += q.c1;
         if (q.c0 < 0) pc.n0 -= q.c0;
+        if (q.nl && !pc.nl) pc.ld = q.ld;
+        pc.nl += q.nl;
       }
       // keep_zero_: a piece where rings meet from both sides stays (degenerate())
-      if (pc.c0 != 0 || pc.c1 != 0 || (keep_zero_ && j > i + 1)) pcs_.push_back(pc);
+      if (pc.c0 != 0 || pc.c1 != 0 || pc.nl != 0 || (keep_zero_ && j > i + 1))
+        pcs_.push_back(pc);
       i = j;
     }
     n_edges = (i64)pcs_.size();

@@ -23,7 +23,9 @@ from .._core._ext import (  # the kernels: the whole surface between Python and 
     Nester,
     PlannerF,
     PlannerI,
+    boolean_f,
     check_polygons_f,
+    clip_lines_f,
     coll_contains,
     coll_pairs,
     coll_prep,
@@ -87,6 +89,11 @@ __all__ = [
     "orient_f",
     "orient_i",
     "overlay_rings",
+    "boolean_f",
+    "clip_lines_f",
+    "OVERLAY_XOR",
+    "FILL_RULES",
+    "NO_LIMIT",
     "selftest",
     "sum_batch_f",
     "sum_batch_i",
@@ -136,6 +143,11 @@ COLL_AUTO: int = _ext.COLL_AUTO
 OVERLAY_UNION: int = _ext.OVERLAY_UNION
 OVERLAY_DIFFERENCE: int = _ext.OVERLAY_DIFFERENCE
 OVERLAY_INTERSECTION: int = _ext.OVERLAY_INTERSECTION
+OVERLAY_XOR: int = _ext.OVERLAY_XOR
+#: fill rule name -> the core's code (overlay.hpp FillRule)
+FILL_RULES: dict[str, int] = dict(_ext.FILL_RULES)
+#: the value of a work limit that never stops a run (boolean.hpp Limits)
+NO_LIMIT: int = int(_ext.NO_LIMIT)
 #: The general sum's methods (general.cpp).
 METHOD_ERODE: int = _ext.METHOD_ERODE
 #: The offset's codes (offset.hpp).
