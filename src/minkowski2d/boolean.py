@@ -37,6 +37,7 @@ from ._engine import options as _options
 from ._engine.coerce import as_array, is_shapely
 from ._engine.containers import unbox
 from ._engine.overlay import check as _check_overlay
+from ._engine.overlay import closed_geometries
 from ._engine.polygon import Rings, problem_error
 from .batch import Ragged
 from .errors import GeometryError, ShapeError
@@ -223,24 +224,8 @@ def _raise(info: np.ndarray, arrays: tuple, names: tuple, labels: Any = None) ->
 
 
 def _shapes(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, to: np.ndarray) -> np.ndarray:
-    """The core's closed rings as shapely geometries, one per task: a Polygon, a
-    MultiPolygon, or an empty Polygon."""
-    import shapely
-
-    T = len(to) - 1
-    out = np.empty(T, dtype=object)
-    if len(xy) == 0:
-        out[:] = [shapely.Polygon() for _ in range(T)]
-        return out
-    multi = shapely.from_ragged_array(shapely.GeometryType.MULTIPOLYGON, xy, (ro, po, to))
-    parts = shapely.get_num_geometries(multi)
-    one = parts == 1
-    out[one] = shapely.get_geometry(multi[one], 0)
-    many = parts > 1
-    out[many] = multi[many]
-    for k in np.flatnonzero(parts == 0):
-        out[k] = shapely.Polygon()
-    return out
+    """The core's closed rings as shapely geometries, one per task."""
+    return closed_geometries(xy, ro, po, to)
 
 
 # --------------------------------------------------------------------------------------

@@ -21,7 +21,7 @@ import numpy as np
 from ..errors import GeometryError, OverflowGeometryError, ResourceLimitError
 from . import core
 
-__all__ = ["overlay", "geometries"]
+__all__ = ["overlay", "geometries", "closed_geometries"]
 
 RULES = {
     "union": core.OVERLAY_UNION,
@@ -59,9 +59,21 @@ def geometries(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, group_off: np.nda
     idx[ends] = ro[:-1]
     coords = xy[idx]
     rco = np.concatenate([[0], np.cumsum(lens + 1)]).astype(np.int64)
-    multi = shapely.from_ragged_array(
-        shapely.GeometryType.MULTIPOLYGON, coords, (rco, po, group_off)
-    )
+    return closed_geometries(coords, rco, po, group_off)
+
+
+def closed_geometries(
+    xy: np.ndarray, ro: np.ndarray, po: np.ndarray, group_off: np.ndarray
+) -> np.ndarray:
+    """As :func:`geometries`, for rings that already repeat their first vertex last."""
+    import shapely
+
+    K = len(group_off) - 1
+    out = np.empty(K, dtype=object)
+    if len(xy) == 0:
+        out[:] = [shapely.Polygon() for _ in range(K)]
+        return out
+    multi = shapely.from_ragged_array(shapely.GeometryType.MULTIPOLYGON, xy, (ro, po, group_off))
     parts = shapely.get_num_geometries(multi)
     one = parts == 1
     out[one] = shapely.get_geometry(multi[one], 0)
