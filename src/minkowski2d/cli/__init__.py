@@ -1,7 +1,8 @@
 """The ``minkowski2d`` command (also ``python -m minkowski2d``).
 
 Subcommands: ``demo``, ``sum``, ``inflate``, ``hull``, and those that feature modules
-register through ``add_parser(subparsers)`` (animation, collision, general sums).
+register through ``add_parser(subparsers)`` (animation, collision, general sums, booleans,
+offsets, nesting, planning).
 
 Bad input prints one line, ``minkowski2d: error: <what and where> (hint: ...)``, on
 standard error (built from the error's fields, :func:`.common.format_error`) and
@@ -28,6 +29,7 @@ _PLUGINS = (
     "minkowski2d.cli.animation",
     "minkowski2d.cli.collision",
     "minkowski2d.cli.general",
+    "minkowski2d.cli.boolean",
     "minkowski2d.cli.offset",
     "minkowski2d.cli.nesting",
     "minkowski2d.cli.planning",
