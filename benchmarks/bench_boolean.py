@@ -46,12 +46,12 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 import shapely
+from _timing import best as timed
 
 import minkowski2d as mk
 
@@ -333,16 +333,6 @@ def area_of(result) -> float:
                 tot += 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
         return abs(tot) / (scale * scale)
     return float(result.area)
-
-
-def timed(f: Callable[[], object], reps: int) -> tuple[float, object]:
-    t, res = math.inf, None
-    for _ in range(reps):
-        res = None  # the previous result freed before the clock starts
-        t0 = time.process_time()
-        res = f()
-        t = min(t, time.process_time() - t0)
-    return t, res
 
 
 def main(argv: list[str] | None = None) -> int:

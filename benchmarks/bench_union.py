@@ -31,10 +31,10 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-import time
 
 import numpy as np
 import shapely
+from _timing import best
 from bench_nfp import CLASSIC, DATA, REL
 from bench_nfp_free import free_angles, rotated_rings
 
@@ -67,16 +67,6 @@ def as_shapely(res):
     if len(polys) == 1:
         return polys[0]
     return shapely.MultiPolygon(polys)
-
-
-def best(f, reps: int):
-    # CPU time of this process (the machine may be shared; both sides run in one thread)
-    t, res = math.inf, None
-    for _ in range(reps):
-        t0 = time.process_time()
-        res = f()
-        t = min(t, time.process_time() - t0)
-    return t, res
 
 
 def main(argv: list[str] | None = None) -> int:
