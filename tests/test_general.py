@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import shapely
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 import minkowski2d as mk
@@ -161,14 +161,28 @@ def ear_clip(ring):
     return tris
 
 
+def certified_union(hulls):
+    """GEOS's union of exact convex pieces, certified by the exact union area.
+
+    GEOS only builds the reference geometry (for the symmetric difference and the hole
+    count); its area must equal oracle.union_area's exact one. union_all has lost half a
+    sum on integer stars (the @example of test_against_brute_force), so a union_all that
+    fails the certificate is replaced by the pieces united one at a time.
+    """
+    exact = float(oracle.union_area(hulls))
+    polys = [shapely.Polygon([(float(x), float(y)) for x, y in h]) for h in hulls]
+    ref = shapely.union_all(polys)
+    if abs(ref.area - exact) > 1e-12 * exact:
+        ref = polys[0]
+        for p in polys[1:]:
+            ref = ref.union(p)
+    assert abs(ref.area - exact) <= 1e-12 * exact, ("GEOS reference uncertified", ref.area, exact)
+    return ref
+
+
 def brute_sum(ra, rb):
     ta, tb = ear_clip(ra), ear_clip(rb)
-    polys = []
-    for t in ta:
-        for u in tb:
-            h = oracle.minkowski_sum(list(t), list(u))
-            polys.append(shapely.Polygon([(float(x), float(y)) for x, y in h]))
-    return shapely.union_all(polys)
+    return certified_union([oracle.minkowski_sum(list(t), list(u)) for t in ta for u in tb])
 
 
 @st.composite
@@ -193,10 +207,16 @@ def star_ring(draw, max_n=9):
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.filter_too_much])
 @given(star_ring(), star_ring())
+# a shared long chain: skipping the check after rounding once lost half a piece's sum here
+@example(
+    [(15, 0), (14, 15), (8, 13), (-5, 14), (-1, 1), (-5, 6), (-16, 12), (0, -2)],
+    [(15, 0), (14, 15), (8, 13), (-5, 14), (-5, 9), (-4, 5), (-11, -3), (0, -2)],
+)
 def test_against_brute_force(ra, rb):
     ref = brute_sum(ra, rb)
     for m, d in METHODS:
         r = mk.minkowski_sum_general(ra, rb, method=m, decomposition=d)
+        assert r.area == pytest.approx(ref.area, rel=1e-12), (m, d)
         assert r.symmetric_difference(ref).area <= 1e-9 * ref.area, (m, d)
         assert holes(r) == holes(ref)
 
