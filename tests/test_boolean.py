@@ -4,6 +4,7 @@ self-intersecting input, containers, errors."""
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 import numpy as np
@@ -241,3 +242,23 @@ def test_clip_lines_along_the_boundary_and_containers():
     arr = np.array([shapely.LineString([(-1, 1), (5, 1)]), None], dtype=object)
     out = mk.clip_lines(arr, sq)
     assert out[0].wkt == "LINESTRING (0 1, 4 1)" and out[1] is None
+
+
+@pytest.mark.parametrize("far_squares", [0, 200])
+def test_rounding_that_breaks_validity_is_renoded(far_squares):
+    # (A ∩ B) ∪ C exactly: a vertex (1, 1/3) a twelfth of an ulp above C's top edge, so
+    # the rounded vertex (1, fl(1/3)) falls inside C; the core must see it (with 200 far
+    # squares the result has > 512 edges: the check's grid, not its sweep) and re-node
+    r, u = 1 / 3, math.ulp(1 / 3)
+    a = shapely.Polygon([(0, 0), (3, 1), (0, 1)])
+    b = shapely.box(1, -1, 2, 2)
+    c = shapely.Polygon([(0, r), (0, -5), (4, -5), (4, r + u)])
+    far = [shapely.box(10 * i, 10, 10 * i + 5, 15) for i in range(far_squares)]
+    g = mk.intersection(
+        shapely.MultiPolygon([a, c, *far]), shapely.MultiPolygon([b, c, *far]), fill_rule="nonzero"
+    )
+    assert shapely.is_valid(g) and len(g.geoms) == 2 + far_squares
+    near = sorted((p for p in g.geoms if p.bounds[1] < 5), key=lambda p: p.bounds[1])
+    # C gained the rounded vertex on its top edge; the two touch there, at one point
+    assert (1.0, r) in list(near[0].exterior.coords) and (1.0, r) in list(near[1].exterior.coords)
+    assert near[0].intersection(near[1]).geom_type == "Point"

@@ -1721,37 +1721,38 @@ inline bool valid_rounded(const Rings& r) {
     y1[i] = std::max(Y(i), Y(j));
   }
   bool ok = true;
-  box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 e, i64 f) {
-    if (!ok) return;
+  // the check of one candidate pair; false (and ok = false) at the first violation
+  auto check = [&](i64 e, i64 f) -> bool {
+    if (!ok) return false;
     const i64 a = e, b = nxt(e), c = f, d = nxt(f);
     const bool one_ring = ring_of[e] == ring_of[f];
     int o1 = orient(a, b, c), o2 = orient(a, b, d);
-    if (o1 * o2 > 0) return;
+    if (o1 * o2 > 0) return true;
     int o3 = orient(c, d, a), o4 = orient(c, d, b);
-    if (o3 * o4 > 0) return;
+    if (o3 * o4 > 0) return true;
     if (o1 == 0 && o2 == 0) {
       // collinear: they may only share an end point, as consecutive edges of one ring
       // or edges of two rings
       auto key = [&](i64 i) { return X(a) != X(b) ? X(i) : Y(i); };
       double lo1 = std::min(key(a), key(b)), hi1 = std::max(key(a), key(b));
       double lo2 = std::min(key(c), key(d)), hi2 = std::max(key(c), key(d));
-      if (hi1 < lo2 || hi2 < lo1) return;
+      if (hi1 < lo2 || hi2 < lo1) return true;
       if (hi1 == lo2 || hi2 == lo1) {
         bool consecutive = one_ring && (b == c || d == a);
-        if (consecutive || !one_ring) return;
+        if (consecutive || !one_ring) return true;
       }
       ok = false;
-      return;
+      return false;
     }
     if (o1 && o2 && o3 && o4) {  // a proper crossing
       ok = false;
-      return;
+      return false;
     }
     // one common point
-    if (one_ring && (b == c || d == a)) return;  // consecutive edges at their vertex
+    if (one_ring && (b == c || d == a)) return true;  // consecutive edges at their vertex
     if (one_ring) {
       ok = false;  // a ring touching itself
-      return;
+      return false;
     }
     // two rings touch: a common vertex, or a vertex of one inside an edge of the other
     i64 v = -1, w = -1;  // a vertex of each at the point, if any
@@ -1760,7 +1761,7 @@ inline bool valid_rounded(const Rings& r) {
         if (same(p, q)) v = p, w = q;
     if (v >= 0) {
       if (cross_at(v, w)) ok = false;
-      return;
+      return ok;
     }
     // a vertex u of one ring inside edge (s, t) of the other: its neighbours must not lie
     // strictly on both sides of that edge
@@ -1770,7 +1771,28 @@ inline bool valid_rounded(const Rings& r) {
     else if (o3 == 0) u = a, s0 = c, t0 = d;
     else u = b, s0 = c, t0 = d;
     if (orient(s0, t0, prv(u)) * orient(s0, t0, nxt(u)) < 0) ok = false;
-  });
+    return ok;
+  };
+  // Candidate pairs: a uniform grid over the exact segments (tolerance 0: they are plain
+  // doubles) from 512 edges on -- a box sweep keeps a whole column of a grid-like result
+  // active -- and the sweep below that or when the grid declines (its memory budget).
+  bool done = false;
+  if (n >= 512) {
+    std::vector<double> ax(n), ay(n), bx(n), by(n), tol(n, 0.0);
+    std::vector<int> grp(n, -1);
+    for (i64 i = 0; i < n; ++i) {
+      const i64 j = nxt(i);
+      ax[i] = X(i);
+      ay[i] = Y(i);
+      bx[i] = X(j);
+      by[i] = Y(j);
+    }
+    GridScratch scratch;
+    done = segment_pairs(n, ax.data(), ay.data(), bx.data(), by.data(), tol.data(), x0.data(),
+                         x1.data(), y0.data(), y1.data(), grp.data(), scratch, check);
+  }
+  if (!done)
+    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 e, i64 f) { check(e, f); });
   return ok;
 }
 
