@@ -370,6 +370,16 @@ class Geo {
     return NAN;
   }
 
+  // (x, y), vertex v rounded, is v itself: a point without a low part, or a crossing
+  // that (x, y) lies on both lines of (the lines meet only there)
+  bool rounds_exactly(i64 v, double x, double y) const {
+    const Vert& V = verts[v];
+    if (V.p >= 0) return plain(pts[V.p]);
+    const P q{dd(x), dd(y)};
+    return orient(pts[lines[V.l1].a], pts[lines[V.l1].b], q) == 0 &&
+           orient(pts[lines[V.l2].a], pts[lines[V.l2].b], q) == 0;
+  }
+
   // rounded coordinates of vertex v
   void rounded(i64 v, double& x, double& y) const {
     const Vert& V = verts[v];
@@ -475,12 +485,16 @@ struct Rings {
   // one of its ring (when collinear edges were merged, the line of the first)
   bool want_lines = false;
   std::vector<i64> line;
+  // every vertex is its exact vertex (rounding moved none): the rings are the exact
+  // result, valid by construction, and the check after rounding has nothing to find
+  bool exact_vertices = false;
   void clear() {
     xy.clear();
     ring_off.assign(1, 0);
     poly_off.assign(1, 0);
     line.clear();
     status = OK;
+    exact_vertices = false;
   }
 };
 
@@ -1560,10 +1574,13 @@ class Overlay {
     const i64 nr = (i64)rings_.size(), nv = (i64)av_.size();
     std::vector<double> vx(nv), vy(nv);
     std::vector<char> have(nv, 0);
+    out.exact_vertices = true;
     auto xy = [&](i64 v, double& x, double& y) {
       if (!have[v]) {
         g_.rounded(av_[v], vx[v], vy[v]);
         if (!(vx[v] - vx[v] == 0 && vy[v] - vy[v] == 0)) out.status = OVERFLOW;
+        if (out.exact_vertices && !g_.rounds_exactly(av_[v], vx[v], vy[v]))
+          out.exact_vertices = false;
         have[v] = 1;
       }
       x = vx[v];
@@ -1627,6 +1644,7 @@ class Overlay {
 inline void clean_rounded(Rings& r) {
   Rings out;
   out.status = r.status;
+  out.exact_vertices = r.exact_vertices;
   // the supporting lines follow their vertices (a dropped repeat's zero-length edge goes)
   const bool lines = r.want_lines && r.line.size() * 2 == r.xy.size();
   out.want_lines = r.want_lines;
@@ -1915,7 +1933,7 @@ inline void rerun_rounded(Rings& r) {
 // rounding made them invalid.
 inline void finish_rounded_impl(Rings& r, int depth) {
   clean_rounded(r);
-  if (valid_rounded(r)) return;
+  if (r.exact_vertices || valid_rounded(r)) return;
   if (depth >= 4) {
     r.status = INTERNAL;
     return;
