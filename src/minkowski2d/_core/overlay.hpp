@@ -839,6 +839,7 @@ class Overlay {
   std::vector<i64> rank_;         // local vertex -> sweep position
   struct Split {
     i64 edge, node;  // node: local vertex id, or nv0 + new crossing
+    double k = 0, ke = 0;  // split(): position along the edge, approximate, and its bound
   };
   std::vector<Split> splits_;
   std::vector<i64> newv_;  // new crossing -> global vertex id
@@ -1148,9 +1149,24 @@ class Overlay {
         const EdgeIn& e = ed_[splits_[k].edge];
         edir_[splits_[k].edge] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
       }
+    // the position along the edge: its line's axis coordinate (as along() compares),
+    // times the sign that makes it grow from v0 to v1; certified apart -> no exact test
+    for (Split& sp : splits_) {
+      const EdgeIn& e = ed_[sp.edge];
+      const P &p = g_.pts[g_.lines[e.line].a], &q = g_.pts[g_.lines[e.line].b];
+      const bool ya = dd_eq(p.x, q.x);
+      const int sg = (ya ? dd_cmp(q.y, p.y) : dd_cmp(q.x, p.x)) * edir_[sp.edge];
+      const Vert& V = g_.verts[gid(sp.node)];
+      const FE c = ya ? V.y : V.x;
+      sp.k = sg > 0 ? c.v : -c.v;
+      sp.ke = c.e;
+    }
     std::sort(splits_.begin(), splits_.end(), [&](const Split& a, const Split& b) {
       if (a.edge != b.edge) return a.edge < b.edge;
       if (a.node == b.node) return false;
+      const double gap = (a.ke + b.ke) * (1 + 0x1p-50);
+      if (b.k - a.k > gap) return true;
+      if (a.k - b.k > gap) return false;
       const EdgeIn& e = ed_[a.edge];
       // along the edge's own direction (v0 -> v1)
       int s = along_s(e.line, gid(a.node), gid(b.node));
