@@ -38,7 +38,7 @@ from ._engine.coerce import as_array, is_shapely
 from ._engine.containers import unbox
 from ._engine.overlay import check as _check_overlay
 from ._engine.overlay import closed_geometries
-from ._engine.polygon import Rings, problem_error
+from ._engine.polygon import Rings, polygon_arrays, problem_error
 from .batch import Ragged
 from .errors import GeometryError, ShapeError
 
@@ -167,27 +167,7 @@ class _Arrays:
     __slots__ = ("xy", "ro", "po", "to")
 
     def __init__(self, geoms: np.ndarray) -> None:
-        import shapely
-
-        T = len(geoms)
-        if T == 0 or bool(shapely.is_empty(geoms).all()):
-            self.xy = np.empty((0, 2))
-            self.ro = np.zeros(1, np.int64)
-            self.po = np.zeros(1, np.int64)
-            self.to = np.zeros(T + 1, np.int64)
-            return
-        # the polygons (parts of multi-polygons, empty ones dropped), their rings (shell
-        # first, closing vertex kept) and coordinates: five vectorized GEOS reads
-        parts, task = shapely.get_parts(geoms, return_index=True)
-        keep = ~shapely.is_empty(parts)
-        parts, task = parts[keep], task[keep]
-        rings = shapely.get_rings(parts)
-        per_poly = shapely.get_num_interior_rings(parts) + 1
-        per_ring = shapely.get_num_coordinates(rings)
-        self.xy = np.ascontiguousarray(shapely.get_coordinates(rings), dtype=np.float64)
-        self.ro = np.concatenate([[0], np.cumsum(per_ring)]).astype(np.int64)
-        self.po = np.concatenate([[0], np.cumsum(per_poly)]).astype(np.int64)
-        self.to = np.concatenate([[0], np.cumsum(np.bincount(task, minlength=T))]).astype(np.int64)
+        self.xy, self.ro, self.po, self.to = polygon_arrays(geoms)
 
     def rings(self, t: int) -> Rings:
         """Task t's polygons as :class:`Rings` (for naming a ring in an error)."""

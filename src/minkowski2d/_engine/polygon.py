@@ -87,24 +87,43 @@ def rings_of_array(points: Any) -> Rings:
 
 def rings_of(geom: Any) -> Rings:
     """The rings of a shapely Polygon or MultiPolygon (empty parts dropped)."""
+    if geom.geom_type not in ("Polygon", "MultiPolygon"):
+        raise TypeError(f"rings_of: a Polygon or MultiPolygon, not a {geom.geom_type}")
+    xy, ro, po, _ = polygon_arrays(np.array([geom], dtype=object))
+    return Rings(xy, ro, po)
+
+
+def polygon_arrays(geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The polygons of T shapely geometries as flat arrays, the one reader of them.
+
+    Returns (xy (N, 2) float64, ring offsets, polygon offsets, geometry offsets (T + 1)
+    into the polygons): the parts of multi-polygons in order, empty polygons dropped,
+    each ring shell first and closed (its first vertex repeated), as given (no
+    reorientation), z dropped. Five vectorized GEOS reads (``shapely.to_ragged_array``'s
+    numpy bookkeeping was half of a small boolean's time).
+
+    Examples
+    --------
+    >>> import shapely
+    >>> xy, ro, po, to = polygon_arrays(np.array([shapely.box(0, 0, 1, 1)], dtype=object))
+    >>> len(xy), ro.tolist(), po.tolist(), to.tolist()
+    (5, [0, 5], [0, 1], [0, 1])
+    """
     import shapely
 
-    if geom.geom_type == "Polygon":
-        geoms = [geom]
-    elif geom.geom_type == "MultiPolygon":
-        geoms = list(geom.geoms)
-    else:
-        raise TypeError(f"rings_of: a Polygon or MultiPolygon, not a {geom.geom_type}")
-    geoms = [g for g in geoms if not g.is_empty]
-    if not geoms:
+    T = len(geoms)
+    if T == 0 or bool(shapely.is_empty(geoms).all()):
         z = np.zeros(1, np.int64)
-        return Rings(np.empty((0, 2), np.float64), z, z.copy())
-    _, coords, (ring_off, poly_off) = shapely.to_ragged_array(geoms)
-    return Rings(
-        np.ascontiguousarray(coords, dtype=np.float64),
-        np.ascontiguousarray(ring_off, dtype=np.int64),
-        np.ascontiguousarray(poly_off, dtype=np.int64),
-    )
+        return np.empty((0, 2)), z, z.copy(), np.zeros(T + 1, np.int64)
+    parts, task = shapely.get_parts(geoms, return_index=True)
+    keep = ~shapely.is_empty(parts)
+    parts, task = parts[keep], task[keep]
+    rings = shapely.get_rings(parts)
+    xy = np.ascontiguousarray(shapely.get_coordinates(rings), dtype=np.float64)
+    ro = np.concatenate([[0], np.cumsum(shapely.get_num_coordinates(rings))]).astype(np.int64)
+    po = np.concatenate([[0], np.cumsum(shapely.get_num_interior_rings(parts) + 1)])
+    to = np.concatenate([[0], np.cumsum(np.bincount(task, minlength=T))])
+    return xy, ro, po.astype(np.int64), to.astype(np.int64)
 
 
 def _where(rings: Rings, ring: int, vertex: int) -> str:
