@@ -388,6 +388,21 @@ class Geo {
       y = pts[V.p].y.hi;
       return;
     }
+    // the crossing of a vertical and a horizontal line through plain points: read off
+    const Line &L1 = lines[V.l1], &L2 = lines[V.l2];
+    const P &p1 = pts[L1.a], &q1 = pts[L1.b], &p2 = pts[L2.a], &q2 = pts[L2.b];
+    if (plain(p1) && plain(q1) && plain(p2) && plain(q2)) {
+      if (p1.x.hi == q1.x.hi && p2.y.hi == q2.y.hi) {
+        x = p1.x.hi;
+        y = p2.y.hi;
+        return;
+      }
+      if (p1.y.hi == q1.y.hi && p2.x.hi == q2.x.hi) {
+        x = p2.x.hi;
+        y = p1.y.hi;
+        return;
+      }
+    }
     // extended precision with a certified bound; exact when it cannot certify
     auto L = [](DD u) {
       long double s = (long double)u.hi + (long double)u.lo;
@@ -1235,6 +1250,7 @@ class Overlay {
   void pieces() {
     std::vector<Piece>& raw = raw_;
     raw.clear();
+    raw.reserve(ed_.size() + splits_.size());  // the most there can be
     std::size_t k = 0;
     for (i64 i = 0; i < (i64)ed_.size(); ++i) {
       const EdgeIn& e = ed_[i];
@@ -1273,6 +1289,7 @@ class Overlay {
       pkey_[i] = {((u64)raw[i].l << 32) | (u64)raw[i].r, (std::uint32_t)i};
     std::sort(pkey_.begin(), pkey_.end());
     pcs_.clear();
+    pcs_.reserve(raw.size());
     for (std::size_t i = 0; i < pkey_.size();) {
       std::size_t j = i;
       Piece pc = raw[pkey_[i].second];

@@ -7,6 +7,9 @@
 //   triangulate_polygons_f(coords, ring_offsets, polygon_offsets, delaunay=True)
 //       -> (status, reason, ring, vertex, triangles (T, 3) int64)
 //   incircle_f / incircle_exact_f(ax, ay, bx, by, cx, cy, dx, dy) -> sign (exact.hpp)
+//   polygons_wkb_f(wkbs: list of bytes) -> (coords (N, 2), ring_offsets, polygon_offsets,
+//                  geometry_offsets (T + 1,)): 2-D WKB of polygonal geometries
+//                  (shapely.to_wkb(..., output_dimension=2)) as flat arrays
 //
 // status is a Status (OK, NONFINITE, INVALID_POLYGON), reason an Invalid code, ring the
 // global ring index and vertex the index inside that ring (the caller's numbering, the
@@ -18,6 +21,8 @@
 #include <nanobind/stl/tuple.h>
 
 #include <cstdint>
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include "bind.hpp"
@@ -97,6 +102,87 @@ Out<i64> box_pairs_array(In1<double> X0, In1<double> X1, In1<double> Y0, In1<dou
   return to_numpy(out, out.size() / 2, 2);
 }
 
+// A reader of 2-D WKB (either byte order; ISO or extended type codes without Z/M/SRID):
+// Polygon (3), MultiPolygon (6) and GeometryCollection (7) of them, recursively; empty
+// polygons are dropped. Rings are kept as written (closed, orientation as given).
+class WkbReader {
+ public:
+  std::vector<double> xy;
+  std::vector<i64> ro{0}, po{0};
+  void geometry(const std::uint8_t* p, std::size_t n) {
+    p_ = p;
+    end_ = p + n;
+    read_geometry(0);
+    if (p_ != end_) fail("trailing bytes");
+  }
+
+ private:
+  const std::uint8_t* p_ = nullptr;
+  const std::uint8_t* end_ = nullptr;
+  bool little_ = true;
+  [[noreturn]] static void fail(const char* what) {
+    throw nb::value_error((std::string("polygons_wkb: malformed WKB: ") + what).c_str());
+  }
+  void need(std::size_t k) {
+    if ((std::size_t)(end_ - p_) < k) fail("truncated");
+  }
+  std::uint32_t u32() {
+    need(4);
+    std::uint32_t v;
+    std::memcpy(&v, p_, 4);
+    if (!little_) v = __builtin_bswap32(v);
+    p_ += 4;
+    return v;
+  }
+  void points(std::uint32_t m) {
+    need((std::size_t)m * 16);
+    const std::size_t at = xy.size();
+    xy.resize(at + 2 * (std::size_t)m);
+    std::memcpy(xy.data() + at, p_, (std::size_t)m * 16);
+    if (!little_)
+      for (std::size_t i = at; i < xy.size(); ++i) {
+        std::uint64_t b;
+        std::memcpy(&b, &xy[i], 8);
+        b = __builtin_bswap64(b);
+        std::memcpy(&xy[i], &b, 8);
+      }
+    p_ += (std::size_t)m * 16;
+  }
+  void read_geometry(int depth) {
+    if (depth > 32) fail("nested too deep");
+    need(1);
+    little_ = *p_++ == 1;
+    const std::uint32_t type = u32();
+    if (type == 3) {
+      const std::uint32_t nr = u32();
+      for (std::uint32_t r = 0; r < nr; ++r) {
+        points(u32());
+        ro.push_back((i64)xy.size() / 2);
+      }
+      if (nr > 0) po.push_back((i64)ro.size() - 1);
+    } else if (type == 6 || type == 7) {
+      const std::uint32_t k = u32();
+      for (std::uint32_t i = 0; i < k; ++i) read_geometry(depth + 1);
+    } else {
+      fail("not a 2-D polygonal geometry");
+    }
+  }
+};
+
+nb::tuple polygons_wkb(nb::list wkbs) {
+  WkbReader rd;
+  std::vector<i64> to{0};
+  to.reserve(wkbs.size() + 1);
+  for (nb::handle h : wkbs) {
+    nb::bytes b = nb::cast<nb::bytes>(h);
+    rd.geometry((const std::uint8_t*)b.c_str(), b.size());
+    to.push_back((i64)rd.po.size() - 1);
+  }
+  const std::size_t n = rd.xy.size() / 2;
+  return nb::make_tuple(to_numpy(rd.xy, n, 2), to_numpy(rd.ro, rd.ro.size(), 0),
+                        to_numpy(rd.po, rd.po.size(), 0), to_numpy(to, to.size(), 0));
+}
+
 }  // namespace
 
 void bind_polygon(nb::module_& m) {
@@ -116,6 +202,7 @@ void bind_polygon(nb::module_& m) {
   m.attr("INVALID_REASONS") = reasons;
   m.def("check_polygons_f", &check_polygons, "coords"_a.noconvert(),
         "ring_offsets"_a.noconvert(), "polygon_offsets"_a.noconvert(), "disjoint"_a = false);
+  m.def("polygons_wkb_f", &polygons_wkb, "wkbs"_a);
   m.def("box_pairs_f", &box_pairs_array, "xmin"_a.noconvert(), "xmax"_a.noconvert(),
         "ymin"_a.noconvert(), "ymax"_a.noconvert());
   m.def("triangulate_polygons_f", &triangulate_polygons, "coords"_a.noconvert(),
