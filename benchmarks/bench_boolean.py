@@ -368,6 +368,8 @@ def main(argv: list[str] | None = None) -> int:
         slow: set[str] = set()
         last: dict[str, tuple[int, float]] = {}
         for n in args.sizes or test.sizes:
+            if "ours" in slow:  # past the budget: the test stops here, every peer with it
+                break
             case = test.make(n)
             if case.edges > args.max_edges:
                 continue
@@ -381,13 +383,16 @@ def main(argv: list[str] | None = None) -> int:
                 times[name], results[name] = timed(run[name], reps)
                 # stop a peer past the budget, or whose growth from its last size predicts
                 # more than three budgets at the next (GEOS's windows grow quadratically)
+                # (the next size is taken to grow the edges as this one did: 8x or 16x)
                 prev = last.get(name)
-                grow = 2.0
+                grow, step = 2.0, 8.0
+                if prev:
+                    step = max(2.0, case.edges / prev[0])
                 if prev and prev[1] > 0.05 and times[name] > 0:
                     ratio = math.log(times[name] / prev[1]) / math.log(case.edges / prev[0])
                     grow = max(1.0, ratio)
                 last[name] = (case.edges, times[name])
-                if times[name] > args.budget or times[name] * 8.0**grow > 3 * args.budget:
+                if times[name] > args.budget or times[name] * step**grow > 3 * args.budget:
                     slow.add(name)
             ours = results["ours"]
             got = area_of(ours)

@@ -262,3 +262,20 @@ def test_rounding_that_breaks_validity_is_renoded(far_squares):
     # C gained the rounded vertex on its top edge; the two touch there, at one point
     assert (1.0, r) in list(near[0].exterior.coords) and (1.0, r) in list(near[1].exterior.coords)
     assert near[0].intersection(near[1]).geom_type == "Point"
+
+
+def test_nested_frames_long_edges():
+    # 1024 nested square frames (iOverlay's "nested squares", evenodd XOR of the bars):
+    # long edges crowd the segment grid's cells, so the candidate pairs switch to the
+    # packed R-tree part way; the exact area is 128 n^2 and the result valid
+    n, a = 1024, 4
+    r = 2 * a * np.arange(1, n + 1)
+    bars_h, bars_v = [], []
+    for k in range(n):
+        q = int(r[k])
+        bars_h += [shapely.box(-q, q - a, q, q), shapely.box(-q, -q, q, -q + a)]
+        bars_v += [shapely.box(-q, -q, -q + a, q), shapely.box(q - a, -q, q, q)]
+    g = mk.symmetric_difference(
+        shapely.MultiPolygon(bars_h), shapely.MultiPolygon(bars_v), fill_rule="evenodd"
+    )
+    assert shapely.is_valid(g) and g.area == 128 * n * n

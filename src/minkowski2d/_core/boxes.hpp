@@ -201,11 +201,18 @@ struct GridScratch {
 // (group -1: any) that share a cell and whose boxes (x0, x1, y0, y1) overlap. Every pair
 // of segments with a common point is among them. on_pair may return false to stop.
 // Long edges are cheap here (a box sweep keeps them active over their whole x-range).
+//
+// With `resume` given, the grid also gives up when long segments crowd its cells (a
+// candidate test per cell neighbour far above the pairs found: nested squares put a few
+// hundred long edges in every cell): it then returns false with *resume = i, every pair
+// (j, i') with i' < i already reported, and the caller reports the rest (box_tree_pairs
+// from i on). Without it, false means nothing was reported.
 template <class F>
 inline bool segment_pairs(i64 n, const double* ax, const double* ay, const double* bx,
                           const double* by, const double* tol, const double* x0,
                           const double* x1, const double* y0, const double* y1,
-                          const int* group, GridScratch& s, F&& on_pair) {
+                          const int* group, GridScratch& s, F&& on_pair,
+                          i64* resume = nullptr) {
   if (n < 2) return true;
   double X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
   for (i64 i = 0; i < n; ++i) {
@@ -301,19 +308,133 @@ inline bool segment_pairs(i64 n, const double* ax, const double* ay, const doubl
         s.cell_edge[fill[s.reg_cell[k]]++] = i;
   }
   s.stamp.assign(n, -1);
+  double checks = 0, hits = 0;
   for (i64 i = 0; i < n; ++i) {
+    if (resume && checks > 8 * (hits + (double)s.reg_start[i]) + 65536) {
+      *resume = i;
+      return false;
+    }
     const int gi = group[i];
     for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k) {
       const i64 c = s.reg_cell[k];
       for (i64 q = s.cell_start[c]; q < s.cell_start[c + 1]; ++q) {
         const i64 j = s.cell_edge[q];
         if (j >= i) break;
+        checks += 1;
         if (s.stamp[j] == i) continue;
         s.stamp[j] = i;
         if (gi >= 0 && group[j] == gi) continue;
         if (x1[j] < x0[i] || x1[i] < x0[j] || y1[j] < y0[i] || y1[i] < y0[j]) continue;
+        hits += 1;
         if constexpr (std::is_same_v<decltype(on_pair(j, i)), bool>) {
           if (!on_pair(j, i)) return true;
+        } else {
+          on_pair(j, i);
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// Scratch of box_tree_pairs (reused: no allocation once grown).
+struct TreeScratch {
+  struct Node {
+    double x0, x1, y0, y1;
+    i64 first, count;  // leaves: items idx[first .. first + count); inner: child nodes
+    bool leaf;
+  };
+  std::vector<Node> nodes;
+  std::vector<i64> idx, tmp, stack;
+  std::vector<double> key;
+};
+
+// Candidate pairs by a packed R-tree (sort-tile-recursive bulk load, GEOS's STRtree
+// layout): on_pair(j, i), j < i, once for every pair of different groups (group -1: any)
+// whose closed boxes overlap, for every i >= from (so it can finish what segment_pairs
+// began). Output-sensitive where sweeps and grids are not: long thin boxes (the edges
+// of nested squares) meet only the boxes they really overlap. on_pair may return false
+// to stop; the result is then false.
+template <class F>
+inline bool box_tree_pairs(i64 n, const double* x0, const double* x1, const double* y0,
+                           const double* y1, const int* group, i64 from, TreeScratch& s,
+                           F&& on_pair) {
+  using Node = TreeScratch::Node;
+  constexpr i64 B = 8;
+  s.nodes.clear();
+  if (n < 2 || from >= n) return true;
+  // leaves: slices by the x of the box centres, each sorted by y, runs of B
+  s.idx.resize(n);
+  std::iota(s.idx.begin(), s.idx.end(), 0);
+  // centres (x, y); ties broken by the other coordinate, so that many boxes on one
+  // centre line (the bars of nested squares) still tile it in order
+  s.key.resize(2 * n);
+  for (i64 i = 0; i < n; ++i) {
+    s.key[2 * i] = x0[i] / 2 + x1[i] / 2;
+    s.key[2 * i + 1] = y0[i] / 2 + y1[i] / 2;
+  }
+  std::sort(s.idx.begin(), s.idx.end(), [&](i64 a, i64 b) {
+    const double xa = s.key[2 * a], xb = s.key[2 * b];
+    return xa < xb || (xa == xb && s.key[2 * a + 1] < s.key[2 * b + 1]);
+  });
+  const i64 leaves = (n + B - 1) / B;
+  const i64 slices = std::max<i64>(1, (i64)std::ceil(std::sqrt((double)leaves)));
+  const i64 per = ((leaves + slices - 1) / slices) * B;
+  for (i64 a = 0; a < n; a += per) {
+    const i64 b = std::min(n, a + per);
+    std::sort(s.idx.begin() + a, s.idx.begin() + b, [&](i64 p, i64 q) {
+      const double yp = s.key[2 * p + 1], yq = s.key[2 * q + 1];
+      return yp < yq || (yp == yq && s.key[2 * p] < s.key[2 * q]);
+    });
+  }
+  for (i64 a = 0; a < n; a += B) {
+    Node nd{INFINITY, -INFINITY, INFINITY, -INFINITY, a, std::min(B, n - a), true};
+    for (i64 t = a; t < a + nd.count; ++t) {
+      const i64 i = s.idx[t];
+      nd.x0 = std::min(nd.x0, x0[i]);
+      nd.x1 = std::max(nd.x1, x1[i]);
+      nd.y0 = std::min(nd.y0, y0[i]);
+      nd.y1 = std::max(nd.y1, y1[i]);
+    }
+    s.nodes.push_back(nd);
+  }
+  // inner levels: runs of B consecutive nodes (the leaves are in tile order)
+  i64 lo = 0, hi = (i64)s.nodes.size();
+  while (hi - lo > 1) {
+    for (i64 a = lo; a < hi; a += B) {
+      Node nd{INFINITY, -INFINITY, INFINITY, -INFINITY, a, std::min(B, hi - a), false};
+      for (i64 t = a; t < a + nd.count; ++t) {
+        const Node& c = s.nodes[t];
+        nd.x0 = std::min(nd.x0, c.x0);
+        nd.x1 = std::max(nd.x1, c.x1);
+        nd.y0 = std::min(nd.y0, c.y0);
+        nd.y1 = std::max(nd.y1, c.y1);
+      }
+      s.nodes.push_back(nd);
+    }
+    lo = hi;
+    hi = (i64)s.nodes.size();
+  }
+  const i64 root = lo;
+  for (i64 i = from; i < n; ++i) {
+    const int gi = group[i];
+    s.stack.clear();
+    s.stack.push_back(root);
+    while (!s.stack.empty()) {
+      const Node& nd = s.nodes[s.stack.back()];
+      s.stack.pop_back();
+      if (nd.x1 < x0[i] || x1[i] < nd.x0 || nd.y1 < y0[i] || y1[i] < nd.y0) continue;
+      if (!nd.leaf) {
+        for (i64 t = nd.first; t < nd.first + nd.count; ++t) s.stack.push_back(t);
+        continue;
+      }
+      for (i64 t = nd.first; t < nd.first + nd.count; ++t) {
+        const i64 j = s.idx[t];
+        if (j >= i) continue;
+        if (gi >= 0 && group[j] == gi) continue;
+        if (x1[j] < x0[i] || x1[i] < x0[j] || y1[j] < y0[i] || y1[i] < y0[j]) continue;
+        if constexpr (std::is_same_v<decltype(on_pair(j, i)), bool>) {
+          if (!on_pair(j, i)) return false;
         } else {
           on_pair(j, i);
         }

@@ -1043,6 +1043,7 @@ class Overlay {
   BoxScratch boxes_;
   std::vector<double> sx0_, sy0_, sx1_, sy1_, stol_;
   GridScratch grid_;
+  TreeScratch tree_;
   void intersect() {
     const i64 n = (i64)ed_.size();
     splits_.clear();
@@ -1086,10 +1087,18 @@ class Overlay {
         sy1_[i] = b.y.v;
         stol_[i] = std::max(std::max(a.x.e, a.y.e), std::max(b.x.e, b.y.e)) * (1 + 0x1p-40);
       }
+      i64 resume = -1;
       if (segment_pairs(n, sx0_.data(), sy0_.data(), sx1_.data(), sy1_.data(), stol_.data(),
                         bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), grid_,
-                        on_pair))
+                        on_pair, &resume))
         return;
+      // the grid gave up (long edges crowd its cells: finish from `resume`) or declined
+      // (too many cell registrations: all of it): a packed R-tree, whose work follows the
+      // overlapping boxes (a sweep keeps every long edge active: nested squares)
+      if (!over_)
+        box_tree_pairs(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
+                       resume >= 0 ? resume : 0, tree_, on_pair);
+      return;
     }
     if (n < 256)
       box_pairs_scan(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), boxes_,
