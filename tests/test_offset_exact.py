@@ -58,11 +58,14 @@ def _inside(pt, geom) -> bool:
     return False
 
 
-def check_upper(out_geom, in_geom, r_up, depth: int = 24):
+def check_upper(out_geom, in_geom, r_up, depth: int = 48):
     """Exact: every boundary segment of the result lies within r_up of the polygon. A
     segment whose two ends are within r_up of one edge is (the distance to a segment is
     convex); otherwise it is halved (exact midpoints) until its pieces are: the distance
-    to the polygon is not convex where a segment passes several edges."""
+    to the polygon is not convex where a segment passes several edges. A segment that
+    runs at distance r_up - m along two edges meeting at a vertex needs pieces shorter
+    than about sqrt(2 r_up m) around the vertex's normal: with the construction's margin
+    m >= 2**-50 at a scale near 1, some 30 halvings (hence the depth)."""
     S = _segments(out_geom)
     T = [(_F(a), _F(b)) for a, b in _segments(in_geom)]
     R2 = Fraction(r_up) ** 2
@@ -195,6 +198,61 @@ def test_collinear_runs(g, r, grow, approx):
     out = mk.offset(ring, r if grow else -r, tolerance=1e-2 * r, approx=approx)
     check_offset(g, r if grow else -r, 1e-2 * r, approx, out=out)
     assert out.equals(mk.offset(g, r if grow else -r, tolerance=1e-2 * r, approx=approx))
+
+
+@st.composite
+def jagged_polygon(draw):
+    """A star polygon digitized finely: every edge cut into pieces whose inner points are
+    pushed off the edge by a fraction of the tolerance, either way: notches and bumps
+    from 1/100 to 1/2 of eps on both sides (the shallow notches the core fills before
+    offsetting), and collinear points (no push)."""
+    g = draw(star_with_angles())
+    r = draw(st.floats(0.2, 3))
+    rel = draw(st.sampled_from([1e-2, 1e-3]))
+    eps = rel * r
+    c = shapely.get_coordinates(g.exterior)[:-1]
+    pts = []
+    for a, b in zip(c, np.roll(c, -1, 0)):
+        pts.append(tuple(a))
+        m = draw(st.integers(1, 6))
+        t = np.sort(np.array(draw(st.lists(st.floats(0.05, 0.95), min_size=m, max_size=m))))
+        d = b - a
+        nrm = np.array([-d[1], d[0]]) / math.hypot(*d)
+        for ti in t:
+            f = draw(st.sampled_from([0.0, 0.01, 0.1, 0.2, 0.3, 0.5])) * draw(
+                st.sampled_from([-1, 1])
+            )
+            pts.append(tuple(a + ti * d + f * eps * nrm))
+    P = shapely.Polygon(pts)
+    assume(P.is_valid)
+    return P, r, rel
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=list(HealthCheck))
+@given(case=jagged_polygon(), grow=st.booleans(), approx=st.sampled_from(SIDES))
+def test_shallow_notches(case, grow, approx):
+    P, r, rel = case
+    d = r if grow else -r
+    out = mk.offset(P, d, tolerance=rel * r, approx=approx)
+    assert out.is_valid
+    check_exact(P, d, rel * r, approx, out)
+
+
+@pytest.mark.parametrize("d", [0.5, 2.0, -0.5, -2.0])
+@pytest.mark.parametrize("approx", SIDES)
+def test_finely_rounded_corners(d, approx):
+    """A rectangle whose corners are arcs of radius 0.05 digitized by 40 points each (so
+    every corner point is a notch of height ~1e-6 on one side): offsets by 0.5 and 2."""
+    pts = []
+    for cx, cy, a0 in [(3.95, 0.05, -90), (3.95, 1.95, 0), (0.05, 1.95, 90), (0.05, 0.05, 180)]:
+        for t in np.radians(np.linspace(a0, a0 + 90, 40)):
+            pts.append((cx + 0.05 * math.cos(t), cy + 0.05 * math.sin(t)))
+    P = shapely.Polygon(pts)
+    if d < 0 and abs(d) >= 1:
+        d = -0.9
+    out = mk.offset(P, d, tolerance=1e-3 * abs(d), approx=approx)
+    assert out.is_valid and out.geom_type == "Polygon"
+    check_exact(P, d, 1e-3 * abs(d), approx, out)
 
 
 @settings(max_examples=30, deadline=None, suppress_health_check=list(HealthCheck))

@@ -58,6 +58,10 @@
 // no overlay, nothing rounded. Otherwise the curves go to one exact overlay (rule
 // w >= 1), which nodes them and returns rings with holes.
 //
+// Notches. Before the curves are built, shallow notches on the offset side (height below
+// eps / 4 in all) are filled, and the construction runs on the filled set with a
+// tolerance (and, inscribed, a radius) reduced by the height: see fill_notches.
+//
 // Miter and square joins are polygons by construction (no tolerance): built in float64
 // with the same pieces, not certified.
 #pragma once
@@ -518,6 +522,137 @@ class Curve {
 };
 
 // ------------------------------------------------------------------------------------
+// shallow notches filled
+//
+// A vertex V (neighbours P, N) of a ring in the curve's frame (offset side on the right)
+// where the ring turns right, orient(P, V, N) < 0, is a notch on the offset side: for a
+// grow a reflex vertex of the polygon, for a shrink a convex one (a notch of the
+// complement). Removing it adds the triangle PVN to the set being grown (for a shrink:
+// to the complement), and every point of that triangle lies within h = dist(V, line PN)
+// of the edges PV and VN (split it at the foot of V: each half is a right triangle whose
+// points are within its height h of its hypotenuse). So when the triangle holds no other
+// vertex of any ring (exactly: then no edge enters it either, as edges do not cross, and
+// the new ring is valid) and h <= t, the filled set P' satisfies P ⊆ P' ⊆ P ⊕ D(t), and
+//     P ⊕ D(r) ⊆ P' ⊕ D(r),   P' ⊕ D(r + e - t) ⊆ P ⊕ D(r + e),
+//     P ⊕ D(r - e) ⊆ P' ⊕ D((r - t) - (e - t)),   P' ⊕ D(r - t) ⊆ P ⊕ D(r),
+// (for a shrink the same with the complements): offsetting P' with the tolerance e - t
+// (and, inscribed, the radius r - t) keeps the bounds promised for P. Removed vertices are
+// not adjacent (each triangle is one of P's, with an original base), and every ring keeps
+// at least four vertices. Such notches are what make a curve fold on itself: the offset
+// of a finely digitized outline has a detour to every one of them, and the detours of
+// close notches cross each other's moved edges (their number grows with r / spacing);
+// filled, the moved edges of the remaining vertices usually cross once and are trimmed.
+// Returns the bound t used (0: nothing removed): the least double >= every removed
+// notch's height if that is certified exactly, else t.
+inline double fill_notches(std::vector<std::vector<Pt>>& rings, double t) {
+  std::vector<double> x0, x1, y0, y1;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> who;  // (ring, vertex); tri: ring + big
+  std::vector<char> cand;
+  std::vector<std::size_t> first;
+  std::size_t total = 0;
+  for (const auto& v : rings) {
+    first.push_back(total);
+    total += v.size();
+  }
+  cand.assign(total, 0);
+  bool any = false;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const auto& v = rings[r];
+    const std::size_t n = v.size();
+    if (n < 5) continue;
+    for (std::size_t j = 0; j < n; ++j) {
+      const Pt &P = v[(j + n - 1) % n], &V = v[j], &N = v[(j + 1) % n];
+      if (orient(P, V, N) >= 0 || line_dist_cmp(P, N, V, t) > 0) continue;
+      cand[first[r] + j] = 1;
+      any = true;
+    }
+  }
+  if (!any) return 0;
+  // boxes: every vertex (a point), then every candidate's triangle
+  const std::uint32_t TRI = 0x80000000u;
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    for (std::size_t j = 0; j < rings[r].size(); ++j) {
+      const Pt& q = rings[r][j];
+      x0.push_back(q.x);
+      x1.push_back(q.x);
+      y0.push_back(q.y);
+      y1.push_back(q.y);
+      who.emplace_back((std::uint32_t)r, (std::uint32_t)j);
+    }
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const auto& v = rings[r];
+    const std::size_t n = v.size();
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!cand[first[r] + j]) continue;
+      const Pt &P = v[(j + n - 1) % n], &V = v[j], &N = v[(j + 1) % n];
+      x0.push_back(std::min({P.x, V.x, N.x}));
+      x1.push_back(std::max({P.x, V.x, N.x}));
+      y0.push_back(std::min({P.y, V.y, N.y}));
+      y1.push_back(std::max({P.y, V.y, N.y}));
+      who.emplace_back((std::uint32_t)r | TRI, (std::uint32_t)j);
+    }
+  }
+  box_pairs((i64)who.size(), x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 a, i64 b) {
+    const bool ta = who[a].first & TRI, tb = who[b].first & TRI;
+    if (ta == tb) return;  // two points or two triangles
+    const auto tri = ta ? who[a] : who[b], pt = ta ? who[b] : who[a];
+    const std::size_t r = tri.first & ~TRI, j = tri.second;
+    if (!cand[first[r] + j]) return;  // already refused
+    const auto& v = rings[r];
+    const std::size_t n = v.size();
+    const std::size_t jp = (j + n - 1) % n, jn = (j + 1) % n;
+    if (pt.first == r && (pt.second == jp || pt.second == j || pt.second == jn)) return;
+    const Pt &P = v[jp], &V = v[j], &N = v[jn], &q = rings[pt.first][pt.second];
+    // the triangle P, V, N turns clockwise: q is in it (closed) when on no side's left
+    if (orient(P, V, q) <= 0 && orient(V, N, q) <= 0 && orient(N, P, q) <= 0)
+      cand[first[r] + j] = 0;
+  });
+  // removal: not adjacent, at least four vertices kept; the heights' bound
+  double hb = 0;
+  std::vector<std::vector<char>> del(rings.size());
+  bool removed = false;
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const auto& v = rings[r];
+    const std::size_t n = v.size();
+    if (n < 5) continue;
+    auto& d = del[r];
+    d.assign(n, 0);
+    std::size_t left = n;
+    for (std::size_t j = 0; j < n && left > 4; ++j) {
+      if (!cand[first[r] + j] || (j > 0 && d[j - 1]) || (j + 1 == n && d[0])) continue;
+      d[j] = 1;
+      --left;
+      removed = true;
+      const Pt &P = v[(j + n - 1) % n], &V = v[j], &N = v[(j + 1) % n];
+      const double dx = N.x - P.x, dy = N.y - P.y;
+      hb = std::max(hb, std::fabs(dx * (V.y - P.y) - dy * (V.x - P.x)) / std::hypot(dx, dy));
+    }
+  }
+  if (!removed) return 0;
+  // the float bound, a little up, certified exactly against every removed notch (else t)
+  hb = std::min(t, up(up(hb * (1 + 0x1p-40)) + 0x1p-1070));
+  for (std::size_t r = 0; r < rings.size() && hb < t; ++r) {
+    const auto& v = rings[r];
+    const std::size_t n = v.size();
+    for (std::size_t j = 0; j < del[r].size(); ++j)
+      if (del[r][j] && line_dist_cmp(v[(j + n - 1) % n], v[(j + 1) % n], v[j], hb) > 0) {
+        hb = t;
+        break;
+      }
+  }
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    if (del[r].empty()) continue;
+    auto& v = rings[r];
+    std::size_t k = 0;
+    for (std::size_t j = 0; j < v.size(); ++j)
+      if (!del[r][j]) v[k++] = v[j];
+    v.resize(k);
+    drop_straight(v);  // a neighbour may now lie straight between its own
+  }
+  return hb;
+}
+
+// ------------------------------------------------------------------------------------
 // one polygonal set
 
 struct Params {
@@ -596,6 +731,27 @@ class Offsetter {
     s.mc = up(std::ldexp(s.r, -45) + 0x1p-50);
     const double least = up(2 * mu + 4 * s.mc);
     res.least = std::ldexp(least, e0);
+    // the rings, scaled (exact, but for coordinates that become subnormal: delta covers
+    // them; then vertices may coincide or become collinear: cleaned again), in the curve's
+    // frame (offset side on the right)
+    const Pow2 down_scale(-e0);
+    std::vector<std::vector<Pt>> sc;
+    for (auto& v0 : rings) {
+      if (v0.empty()) continue;
+      if (!grow && v0.size() < 3) continue;  // no area: nothing to shrink
+      std::vector<Pt> sv;
+      sv.reserve(v0.size());
+      for (const Pt& q : v0) {
+        Pt t{down_scale(q.x), down_scale(q.y)};
+        if (sv.empty() || sv.back().x != t.x || sv.back().y != t.y) sv.push_back(t);
+      }
+      while (sv.size() > 1 && sv.front().x == sv.back().x && sv.front().y == sv.back().y)
+        sv.pop_back();
+      drop_straight(sv);
+      if (!grow && sv.size() < 3) continue;
+      if (!grow) std::reverse(sv.begin(), sv.end());
+      sc.push_back(std::move(sv));
+    }
     if (p.join == ROUND) {
       double eps;
       if (std::isnan(p.tolerance)) {
@@ -613,6 +769,29 @@ class Offsetter {
       }
       res.eps = std::ldexp(eps, e0);
       s.circ = p.outer == grow;
+      // shallow notches filled (see fill_notches): the offset of the filled set P' with
+      // radius r and tolerance eps - h (circumscribed), or r - h and eps - h (inscribed),
+      // is within the bounds of P's offset with r and eps
+      if (!want_labels && 0.75 * eps >= least * (1 + 0x1p-20)) {
+        // passes while notches go and the budget eps / 4 lasts (each pass's bound adds)
+        double h = 0;
+        for (int pass = 0; pass < 8; ++pass) {
+          const double room = down(eps / 4 - h);
+          if (!(room > 0)) break;
+          const double hk = fill_notches(sc, room);
+          if (hk == 0) break;
+          h = up(h + hk);
+        }
+        if (h > 0) {
+          if (s.circ) {
+            eps = down(eps - h);
+          } else {
+            const double inner = up(s.r - eps);  // P' (+) D(r' - eps') covers P (+) D(r - eps)
+            s.r = down(s.r - h);
+            eps = down(s.r - inner);
+          }
+        }
+      }
       if (s.circ) {
         s.t_cov = up(s.r + mu);
         s.t_up = down(down(s.r + eps) - mu);
@@ -635,23 +814,8 @@ class Offsetter {
     const int w = grow ? 1 : -1;
     i64 base = 0;
     std::size_t nc = 0;
-    std::vector<Pt> sv;
-    const Pow2 down_scale(-e0);
-    for (auto& v0 : rings) {
-      if (v0.empty()) continue;
-      if (!grow && v0.size() < 3) continue;  // no area: nothing to shrink
-      // scaled (exact, but for coordinates that become subnormal: delta covers them;
-      // then vertices may coincide or become collinear: cleaned again)
-      sv.clear();
-      for (const Pt& q : v0) {
-        Pt t{down_scale(q.x), down_scale(q.y)};
-        if (sv.empty() || sv.back().x != t.x || sv.back().y != t.y) sv.push_back(t);
-      }
-      while (sv.size() > 1 && sv.front().x == sv.back().x && sv.front().y == sv.back().y)
-        sv.pop_back();
-      drop_straight(sv);
-      if (!grow && sv.size() < 3) continue;
-      if (!grow) std::reverse(sv.begin(), sv.end());
+    for (const std::vector<Pt>& sv : sc) {
+      if (sv.empty()) continue;
       if (curves_.size() <= nc) curves_.emplace_back();
       Curve& cv = curves_[nc++];
       cv.build(sv, s, base);
