@@ -1360,19 +1360,52 @@ class Overlay {
     return g_.turn(e1.line, e1.s, e2.line, e2.s) > 0;
   }
 
+  // The sweep's status: piece ids bottom to top in chunks of at most 2 * kChunk, so that
+  // replacing the pieces at one vertex costs a chunk, not the whole status (nested frames
+  // keep 10^5 pieces active: a sorted vector spent most of their overlay moving memory).
+  struct SweepStatus {
+    static constexpr std::size_t kChunk = 256;
+    std::vector<std::vector<i64>> ch;  // non-empty chunks, in order
+    std::size_t spare = 0;             // chunks ch[size - spare ..) are empty spares
+    void clear() {
+      for (auto& c : ch) c.clear();
+      spare = ch.size();
+    }
+    std::size_t size() const { return ch.size() - spare; }
+    // a new empty chunk at index c (reusing a spare's memory)
+    void open(std::size_t c) {
+      if (spare > 0) {
+        std::vector<i64> v;
+        v.swap(ch.back());
+        ch.pop_back();
+        --spare;
+        ch.insert(ch.begin() + (std::ptrdiff_t)c, std::move(v));
+      } else {
+        ch.insert(ch.begin() + (std::ptrdiff_t)c, std::vector<i64>());
+      }
+    }
+    void close(std::size_t c) {  // chunk c is empty: it becomes a spare
+      std::vector<i64> v;
+      v.swap(ch[c]);
+      ch.erase(ch.begin() + (std::ptrdiff_t)c);
+      ch.push_back(std::move(v));
+      ++spare;
+    }
+  };
+  SweepStatus sw_st_;
+
   // Sweeps the pieces ps (which do not cross); after inserting the pieces that start at
   // a vertex calls at_vertex(new pieces bottom to top, predecessor of the lowest or -1).
-  // The status is a vector sorted bottom to top: at vertex v the pieces below v are a
-  // prefix (v is strictly left of each, looking along it), then come the pieces that end
-  // at v (no piece passes through a vertex: the pieces are noded); those are replaced
-  // by the pieces that start at v, in slope order.
-  std::vector<i64> sw_by_rank_, sw_lo_l_, sw_lo_r_, sw_at_l_, sw_at_r_, sw_fill_, sw_status_,
-      sw_fresh_;
+  // The status is sorted bottom to top: at vertex v the pieces below v are a prefix (v is
+  // strictly left of each, looking along it), then come the pieces that end at v (no
+  // piece passes through a vertex: the pieces are noded); those are replaced by the
+  // pieces that start at v, in slope order.
+  std::vector<i64> sw_by_rank_, sw_lo_l_, sw_lo_r_, sw_at_l_, sw_at_r_, sw_fill_, sw_fresh_;
   template <class F>
   void sweep(const std::vector<Piece>& ps, F&& at_vertex) {
     const i64 nv = (i64)av_.size(), np = (i64)ps.size();
     std::vector<i64>&by_rank = sw_by_rank_, &lo_l = sw_lo_l_, &lo_r = sw_lo_r_,
-    &at_l = sw_at_l_, &at_r = sw_at_r_, &status = sw_status_, &fresh = sw_fresh_;
+    &at_l = sw_at_l_, &at_r = sw_at_r_, &fresh = sw_fresh_;
     by_rank.resize(nv);
     for (i64 v = 0; v < nv; ++v) by_rank[rank_[v]] = v;
     lo_l.assign(nv + 1, 0);
@@ -1391,41 +1424,83 @@ class Overlay {
     for (i64 e = 0; e < np; ++e) at_l[sw_fill_[ps[e].l]++] = e;
     sw_fill_.assign(lo_r.begin(), lo_r.end() - 1);
     for (i64 e = 0; e < np; ++e) at_r[sw_fill_[ps[e].r]++] = e;
-    status.clear();
+    SweepStatus& st = sw_st_;
+    st.clear();
+    auto& ch = st.ch;
     for (i64 t = 0; t < nv; ++t) {
       i64 v = by_rank[t];
       const i64 nend = lo_r[v + 1] - lo_r[v], nstart = lo_l[v + 1] - lo_l[v];
       if (nend == 0 && nstart == 0) continue;
-      // the first piece not below v
-      std::size_t lo = 0, hi = status.size();
-      while (lo < hi) {
-        std::size_t mid = (lo + hi) / 2;
-        const Piece& e = ps[status[mid]];
-        if (e.r != v && side(e, v) > 0)  // v is on the pieces that end at v
-          lo = mid + 1;
-        else
-          hi = mid;
+      auto below = [&](i64 id) {
+        const Piece& e = ps[id];
+        return e.r != v && side(e, v) > 0;  // v is on the pieces that end at v
+      };
+      // the first piece not below v: its chunk c, then its place o in it
+      const std::size_t nc = st.size();
+      std::size_t c = 0, o = 0;
+      {
+        std::size_t lo = 0, hi = nc;
+        while (lo < hi) {
+          std::size_t mid = (lo + hi) / 2;
+          if (below(ch[mid].back())) lo = mid + 1;
+          else hi = mid;
+        }
+        c = lo;
+        if (c < nc) {
+          std::size_t a = 0, b = ch[c].size();
+          while (a < b) {
+            std::size_t mid = (a + b) / 2;
+            if (below(ch[c][mid])) a = mid + 1;
+            else b = mid;
+          }
+          o = a;
+        }
       }
-      const std::size_t pos = lo;
+      // the nend pieces from there end at v: removed (they may span chunks)
+      for (i64 k = nend; k > 0;) {
 #ifdef MK_OVERLAY_CHECK
-      for (i64 k = 0; k < nend; ++k)
-        if (pos + k >= status.size() || ps[status[pos + k]].r != v) std::abort();
+        if (c >= st.size() || ps[ch[c][o]].r != v) std::abort();
 #endif
+        std::vector<i64>& cur = ch[c];
+        const std::size_t take = std::min<std::size_t>((std::size_t)k, cur.size() - o);
+        cur.erase(cur.begin() + (std::ptrdiff_t)o, cur.begin() + (std::ptrdiff_t)(o + take));
+        k -= (i64)take;
+        if (cur.empty()) {
+          st.close(c);  // the next chunk is now chunk c, from its start
+          o = 0;
+        } else if (o == cur.size() && k > 0) {
+          ++c;
+          o = 0;
+        }
+      }
+      if (nstart == 0) continue;
+      // the predecessor of the place, then the fresh pieces inserted there
+      i64 pred = -1;
+      if (o > 0) pred = ch[c][o - 1];
+      else if (c > 0) pred = ch[c - 1].back();
       fresh.assign(at_l.begin() + lo_l[v], at_l.begin() + lo_l[v + 1]);
       if (fresh.size() > 1)
         std::sort(fresh.begin(), fresh.end(),
                   [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
-      // replace the nend pieces at pos (they end at v) by the fresh ones
-      const i64 diff = nstart - nend;
-      if (diff > 0) {
-        status.insert(status.begin() + pos, (std::size_t)diff, -1);
-      } else if (diff < 0) {
-        status.erase(status.begin() + pos, status.begin() + pos + (std::size_t)(-diff));
+      if (c == st.size()) {  // at the top: the last chunk's end, or a new chunk
+        if (c > 0 && ch[c - 1].size() < 2 * SweepStatus::kChunk) {
+          --c;
+          o = ch[c].size();
+        } else {
+          st.open(c);
+          o = 0;
+        }
       }
-      for (i64 k = 0; k < nstart; ++k) status[pos + k] = fresh[k];
-
-      if (nstart == 0) continue;
-      at_vertex(fresh, pos == 0 ? (i64)-1 : status[pos - 1]);
+      std::vector<i64>& cur = ch[c];
+      cur.insert(cur.begin() + (std::ptrdiff_t)o, fresh.begin(), fresh.end());
+      if (cur.size() > 2 * SweepStatus::kChunk) {  // split in halves
+        const std::size_t half = cur.size() / 2;
+        st.open(c + 1);
+        std::vector<i64>& a = ch[c];
+        ch[c + 1].assign(a.begin() + (std::ptrdiff_t)half, a.end());
+        a.resize(half);
+      }
+      at_vertex(fresh, pred);
     }
   }
 
