@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import os
 from fractions import Fraction
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -377,6 +378,21 @@ def _maze(n, seed):
     return occ
 
 
+def same_as_visibility(mesh, vis, pairs):
+    """The mesh planner's lengths equal the visibility graph's (the same errors where it
+    has no path), and its paths are free."""
+    for s, g in pairs:
+        try:
+            want = vis.shortest_path(s, g)
+        except GeometryError as exc:
+            with pytest.raises(type(exc)):
+                mesh.shortest_path(s, g)
+            continue
+        got = mesh.shortest_path(s, g)
+        assert math.isclose(got.length, want.length, rel_tol=1e-12), (s, g)
+        assert all(mesh._core.segment_free(*a, *b) for a, b in zip(got.points, got.points[1:]))
+
+
 @pytest.mark.parametrize("kind", ["maze", "cave"])
 def test_mesh_equals_visibility_on_game_maps(kind):
     # dead ends (mazes) and pinches between diagonal blocks (caves): the mesh's lengths
@@ -394,16 +410,7 @@ def test_mesh_equals_visibility_on_game_maps(kind):
     ]
     free = np.argwhere(~occ)
     pts += [(c + 0.5, r + 0.5) for r, c in free[rng.integers(len(free), size=80)].tolist()]
-    for s, g in zip(pts[0::2], pts[1::2]):
-        try:
-            want = vis.shortest_path(s, g)
-        except GeometryError as exc:
-            with pytest.raises(type(exc)):
-                mesh.shortest_path(s, g)
-            continue
-        got = mesh.shortest_path(s, g)
-        assert math.isclose(got.length, want.length, rel_tol=1e-12), (s, g)
-        assert all(mesh._core.segment_free(*a, *b) for a, b in zip(got.points, got.points[1:]))
+    same_as_visibility(mesh, vis, zip(pts[0::2], pts[1::2]))
 
 
 def test_plot_and_polygons_show_the_mesh():
@@ -432,3 +439,111 @@ def test_mesh_locate_names_the_lowest_of_overlapping_obstacles():
         with pytest.raises(GeometryError) as ei:
             pl.shortest_path((1.5, 0.5), (3, 3))
         assert ei.value.obstacle == obs.index(L)
+
+
+# --------------------------------------------------------------------------------------
+# real game maps (GPPC-2013 scenarios in ../shared/data/maps, read from there) and the
+# search's pruning (the corners a shortest path can bend at, bridges of the mesh)
+
+MAPS = Path(__file__).resolve().parents[2] / "shared" / "data" / "maps"
+GAME_MAPS = ["Archipelago", "BigGameHunters", "Brushfire", "ca_cave", "dr_dungeon", "ht_keep"]
+requires_maps = pytest.mark.skipif(
+    not MAPS.is_dir(), reason=f"game maps missing: {MAPS} (../shared/data/maps) does not exist"
+)
+
+
+def scenario(name: str, n: int) -> list:
+    """n queries spread over the map's scenario file: (start, goal, octile optimum)."""
+    rows = [r.split() for r in (MAPS / f"{name}.map.scen").read_text().splitlines()[1:]]
+    rows = [r for r in rows if r]
+    pick = np.linspace(0, len(rows) - 1, n).astype(int)
+    return [
+        ((int(rows[i][4]) + 0.5, int(rows[i][5]) + 0.5),
+         (int(rows[i][6]) + 0.5, int(rows[i][7]) + 0.5), float(rows[i][8]))
+        for i in pick
+    ]  # fmt: skip
+
+
+@requires_maps
+@pytest.mark.parametrize("name", GAME_MAPS)
+def test_game_map_paths_are_valid_and_within_the_octile_optimum(name):
+    occ = mk.io.read_grid_map(MAPS / f"{name}.map")
+    pl = mk.MotionPlanner.from_grid(occ, method="mesh")
+    for s, g, octile in scenario(name, 60):
+        path = pl.shortest_path(s, g)
+        pts = path.points
+        assert tuple(pts[0]) == s and tuple(pts[-1]) == g
+        assert all(pl._core.segment_free(*a, *b) for a, b in zip(pts, pts[1:])), (s, g)
+        # the scenario rounds the optimum to 6 significant digits
+        assert path.length <= octile + 0.5 * 10.0 ** (math.floor(math.log10(octile)) - 5)
+
+
+@requires_maps
+@pytest.mark.parametrize("name", ["ca_cave", "ht_keep"])
+def test_game_map_lengths_equal_the_visibility_graph(name):
+    occ = mk.io.read_grid_map(MAPS / f"{name}.map")
+    mesh = mk.MotionPlanner.from_grid(occ, method="mesh")
+    vis = mk.MotionPlanner.from_grid(occ, method="visibility")
+    for s, g, _ in scenario(name, 120):
+        got, want = mesh.shortest_path(s, g).length, vis.shortest_path(s, g).length
+        assert math.isclose(got, want, rel_tol=1e-12), (s, g)
+
+
+@st.composite
+def caves(draw):
+    """Random grids dense enough for pockets (dead-end corridors, bays behind one mesh
+    edge) and pinches (blocked cells touching at a corner only)."""
+    h = draw(st.integers(4, 14))
+    w = draw(st.integers(4, 14))
+    p = draw(st.sampled_from([0.25, 0.35, 0.45]))
+    seed = draw(st.integers(0, 2**32 - 1))
+    return np.random.default_rng(seed).random((h, w)) < p
+
+
+@settings(max_examples=40 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(occ=caves(), data=st.data())
+def test_caves_mesh_equals_visibility(occ, data):
+    # starts and goals at cell centres and lattice points (on mesh vertices and edges,
+    # inside pockets and at their mouths)
+    h, w = occ.shape
+    free = np.argwhere(~occ)
+    pt = st.one_of(
+        st.tuples(st.integers(0, w), st.integers(0, h)),
+        st.sampled_from([(c + 0.5, r + 0.5) for r, c in free.tolist()] or [(0, 0)]),
+    )
+    pairs = data.draw(st.lists(st.tuples(pt, pt), min_size=1, max_size=8))
+    mesh = mk.MotionPlanner.from_grid(occ, method="mesh")
+    vis = mk.MotionPlanner.from_grid(occ, method="visibility")
+    same_as_visibility(mesh, vis, pairs)
+
+
+def _cave(n, seed):
+    # cellular-automaton caves (the 4-5 rule): ragged walls with many bays
+    occ = np.random.default_rng(seed).random((n, n)) < 0.45
+    for _ in range(4):
+        p = np.pad(occ, 1, constant_values=True).astype(int)
+        walls = sum(p[1 + a : n + 1 + a, 1 + b : n + 1 + b] for a in (-1, 0, 1) for b in (-1, 0, 1))
+        occ = walls >= 5
+    return occ
+
+
+def test_bridge_pruning_keeps_lengths_and_prunes():
+    # no interval across a bridge of the mesh into a side without the target: the same
+    # lengths as the search without it, and far fewer nodes
+    occ = _cave(64, 3)
+    core = mk.MotionPlanner.from_grid(occ, method="mesh")._core
+    free = np.argwhere(~occ)
+    rng = np.random.default_rng(4)
+    pts = [(c + 0.5, r + 0.5) for r, c in free[rng.integers(len(free), size=120)].tolist()]
+    nodes = {True: 0, False: 0}
+    for s, g in zip(pts[0::2], pts[1::2]):
+        res = {}
+        for prune in (True, False):
+            core.prune = prune
+            st_, _, path = core.query(*s, *g)
+            res[prune] = (st_, float(np.hypot(*np.diff(path, axis=0).T).sum()))
+            nodes[prune] += core.counters()[0]
+        assert res[True][0] == res[False][0]
+        assert math.isclose(res[True][1], res[False][1], rel_tol=1e-12), (s, g)
+    core.prune = True
+    assert nodes[False] > 1.4 * nodes[True], nodes

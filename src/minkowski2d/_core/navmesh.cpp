@@ -131,6 +131,7 @@ void bind_mesh_planner(nb::module_& m) {
       // (nodes expanded, nodes pushed) by the last query
       .def("counters",
            [](const MP& self) { return nb::make_tuple(self.n_expanded, self.n_pushed); })
+      .def_rw("prune", &MP::prune)  // the bridge pruning (on; tests turn it off)
       .def_ro("status", &MP::status);
   m.attr("MESH_OK") = (int)mk::MESH_OK;
   m.attr("MESH_INEXACT") = (int)mk::MESH_INEXACT;

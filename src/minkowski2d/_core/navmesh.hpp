@@ -25,15 +25,19 @@
 // points), so no intersection point is ever computed for a decision: the successors,
 // the cone tests and the target test are signs of cross products of exact doubles.
 // Expanding a node projects the cone through the polygon; intervals on the far edges
-// keep the root. Where the interval reaches an end of its edge that is a corner, the
-// path may bend there: a vertex node at the corner covers the side hidden from the root
-// (the half-plane beyond the line root-corner, with that line), in every polygon around
-// the corner -- Polyanya's non-observable successors, taken over the corner's whole fan
-// so that a path passing exactly through a vertex is never lost. A junction inside a
-// cone is a vertex node in every direction (a path may pass the pinch). Root-level
-// pruning (a vertex reached again at no smaller length is not expanded again) and the
-// admissible heuristic of Polyanya (the shortest root-interval-target distance, the
-// target mirrored across the edge when on the root's side) make it A*. Lengths are
+// keep the root. Where a cone reaches a corner, the path may bend there: a vertex node
+// at the corner covers the side hidden from the root (the half-plane beyond the line
+// root-corner, with that line), in the polygons around the corner that lie between the
+// ray beyond the corner and the corner's nearer boundary edge -- Polyanya's
+// non-observable successors, taken over the corner's whole fan so that a path passing
+// exactly through a vertex is never lost. A shortest path bends at a corner only around
+// its obstacle: where the line root-corner runs into the obstacle, or on along one of
+// its edges, no node is made. A junction inside a cone is a vertex node in every
+// direction (a path may pass the pinch). Root-level pruning (a vertex reached again at
+// no smaller length is not expanded again), the pruning at the mesh's bridges (below,
+// MeshPlanner) and the admissible heuristic of Polyanya (the shortest
+// root-interval-target distance, the target mirrored across the edge when on the root's
+// side) make it A*. Lengths are
 // doubles: as in the visibility graph, two paths whose lengths differ only by rounding
 // may be chosen either way; validity never depends on them.
 #pragma once
@@ -574,6 +578,7 @@ struct MeshNode {
   int root;   // interval / final: its root; vertex: the parent root
   int poly, k, v;
   int restr;  // vertex: 0 none, +1 / -1: allowed where restr * side(R) >= 0
+  int e1;     // vertex with restr: the corner's boundary neighbour nearest the ray beyond
   Lim L, R;
 };
 
@@ -601,30 +606,130 @@ struct MeshPlanner {
   // counters of the last query (tests and benchmarks)
   mutable i64 n_expanded = 0, n_pushed = 0;
 
-  // per polygon: a dead end (Polyanya's dead-end pruning): one neighbour and no junction.
-  // A path entering it (not to a target inside) leaves through the same edge -- the only
-  // way out, the vertices off that edge being corners whose free angle is the polygon's
-  // own -- and the segment between the two crossings (on the edge, free) is shorter; the
-  // bends at the edge's ends are pushed by the node that made the interval.
-  std::vector<char> dead;
+  // Cul-de-sac pruning (Polyanya's dead ends, generalised). In the graph of the polygons
+  // (joined by their shared edges, and all polygons around a junction joined to each
+  // other: a path may pass the pinch), a bridge is a mesh edge e whose removal splits the
+  // graph. A path that crosses e into the side without the target must leave that side
+  // again, and only through the closed segment e; the part in between is no shorter than
+  // the segment on e between the two points (free: e is a mesh edge). So no interval is
+  // pushed across a bridge into a side without a target polygon, and a vertex node does
+  // not expand the polygons around it that a bridge at the vertex separates from every
+  // target polygon. The bends at e's ends are pushed by the node that reached e.
+  // bsub: per polygon edge slot, the child polygon c of its bridge in the DFS tree (the
+  // side of c is the subtree: ptin[c] <= ptin[x] < ptout[c]), -1 for no bridge;
+  // vb (CSR vboff): per vertex, the children of the bridges that end at it.
+  std::vector<int> bsub, ptin, ptout, vboff, vb;
+  bool prune = true;  // the bridge pruning on (tests compare the search without it)
+
+  void find_bridges() {
+    const int P = M.npoly(), H = (int)M.pv.size(), NV = M.nvert();
+    // adjacency (neighbour, edge id): mesh edges by their lower slot, junction links
+    // numbered from H
+    std::vector<int> aoff(P + 1, 0);
+    std::vector<std::pair<int, int>> links;  // (p, q, id) for junctions: star at vp[0]
+    std::vector<int> lid;
+    for (int v = 0; v < NV; ++v)
+      if (M.vflag[v] & JUNCTION)
+        for (int t = M.vpoff[v] + 1; t < M.vpoff[v + 1]; ++t) {
+          links.push_back({M.vp[M.vpoff[v]], M.vp[t]});
+          lid.push_back(H + (int)links.size() - 1);
+        }
+    std::vector<int> owner(H);
+    for (int p = 0; p < P; ++p)
+      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) {
+        owner[i] = p;
+        aoff[p + 1] += M.pn[i] >= 0;
+      }
+    for (const auto& l : links) ++aoff[l.first + 1], ++aoff[l.second + 1];
+    for (int p = 0; p < P; ++p) aoff[p + 1] += aoff[p];
+    std::vector<std::pair<int, int>> adj(aoff[P]);
+    std::vector<int> fill(aoff.begin(), aoff.end() - 1);
+    for (int i = 0; i < H; ++i)
+      if (M.pn[i] >= 0) {
+        const int q = M.pn[i], j = M.poff[q] + M.pe[i];
+        adj[fill[owner[i]]++] = {q, std::min(i, j)};
+      }
+    for (std::size_t k = 0; k < links.size(); ++k) {
+      adj[fill[links[k].first]++] = {links[k].second, lid[k]};
+      adj[fill[links[k].second]++] = {links[k].first, lid[k]};
+    }
+    // iterative Tarjan: tin / low, a tree edge (parent, child) is a bridge when
+    // low[child] > tin[parent]
+    ptin.assign(P, -1);
+    ptout.assign(P, 0);
+    bsub.assign(H, -1);
+    std::vector<int> low(P, 0), pedge(P, -1), it(P, 0), stack;
+    int timer = 0;
+    for (int s = 0; s < P; ++s) {
+      if (ptin[s] >= 0) continue;
+      ptin[s] = low[s] = timer++;
+      it[s] = aoff[s];
+      stack.push_back(s);
+      while (!stack.empty()) {
+        const int p = stack.back();
+        if (it[p] < aoff[p + 1]) {
+          const auto [q, id] = adj[it[p]++];
+          if (id == pedge[p]) continue;
+          if (ptin[q] < 0) {
+            ptin[q] = low[q] = timer++;
+            pedge[q] = id;
+            it[q] = aoff[q];
+            stack.push_back(q);
+          } else {
+            low[p] = std::min(low[p], ptin[q]);
+          }
+          continue;
+        }
+        stack.pop_back();
+        ptout[p] = timer;
+        if (stack.empty()) continue;
+        const int par = stack.back();
+        low[par] = std::min(low[par], low[p]);
+        if (low[p] > ptin[par] && pedge[p] < H) {
+          const int i = pedge[p], j = M.poff[M.pn[i]] + M.pe[i];
+          bsub[i] = bsub[j] = p;
+        }
+      }
+    }
+    vboff.assign(NV + 1, 0);
+    auto ends = [&](int i, int& a, int& b) {
+      const int p = owner[i];
+      a = M.pv[i];
+      b = M.pv[i + 1 < M.poff[p + 1] ? i + 1 : M.poff[p]];
+    };
+    for (int i = 0; i < H; ++i)
+      if (bsub[i] >= 0 && i < M.poff[M.pn[i]] + M.pe[i]) {
+        int a, b;
+        ends(i, a, b);
+        ++vboff[a + 1], ++vboff[b + 1];
+      }
+    for (int v = 0; v < NV; ++v) vboff[v + 1] += vboff[v];
+    vb.assign(vboff[NV], -1);
+    std::vector<int> vf(vboff.begin(), vboff.end() - 1);
+    for (int i = 0; i < H; ++i)
+      if (bsub[i] >= 0 && i < M.poff[M.pn[i]] + M.pe[i]) {
+        int a, b;
+        ends(i, a, b);
+        vb[vf[a]++] = bsub[i];
+        vb[vf[b]++] = bsub[i];
+      }
+  }
 
   int build(const double* meshbox) {
     base.build_base();
     for (int q = 0; q < 4; ++q) mb[q] = meshbox[q];
     if (has_zero_width(base)) return status = MESH_ZERO_WIDTH;
     status = M.build(base, mb);
-    dead.assign(M.npoly(), 0);
-    if (status == MESH_OK)
-      for (int p = 0; p < M.npoly(); ++p) {
-        int nbs = 0;
-        bool junction = false;
-        for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) {
-          nbs += M.pn[i] >= 0;
-          junction = junction || (M.vflag[M.pv[i]] & JUNCTION);
-        }
-        dead[p] = nbs == 1 && !junction;
-      }
+    if (status == MESH_OK) find_bridges();
     return status;
+  }
+
+  // is a target polygon on polygon x's side of the bridge with child c?
+  bool target_side(const MeshScratch& MS, int x, int c) const {
+    const bool xin = ptin[c] <= ptin[x] && ptin[x] < ptout[c];
+    for (int t : MS.tpolys)
+      if ((ptin[c] <= ptin[t] && ptin[t] < ptout[c]) == xin) return true;
+    return false;
   }
 
   static int side(const Lim& l, double rx, double ry, double x, double y) {
@@ -750,7 +855,8 @@ struct MeshPlanner {
       return V.restr * side(V.R, M.vx[V.v], M.vy[V.v], x, y) >= 0;
     };
     auto push_interval = [&](int root, int nb, int k, const Lim& L, const Lim& R) {
-      if (dead[nb] && !MS.tmark[nb]) return;
+      const int c = bsub[M.poff[nb] + k];
+      if (prune && c >= 0 && !target_side(MS, nb, c)) return;
       Node N{};
       N.kind = 0;
       N.root = root;
@@ -762,7 +868,7 @@ struct MeshPlanner {
       N.f = N.g + heuristic(N, roots[root], tx, ty);
       push(N);
     };
-    auto push_vertex = [&](int v, int parent, double g, int restr, const Lim& line) {
+    auto push_vertex = [&](int v, int parent, double g, int restr, int e1, const Lim& line) {
       if (!(g < MS.best[v])) return;
       if (MS.best[v] == std::numeric_limits<double>::infinity()) MS.touched.push_back(v);
       MS.best[v] = g;
@@ -773,6 +879,7 @@ struct MeshPlanner {
       N.g = g;
       N.f = g + dist(M.vx[v], M.vy[v], tx, ty);
       N.restr = restr;
+      N.e1 = e1;
       N.R = line;
       push(N);
     };
@@ -786,19 +893,51 @@ struct MeshPlanner {
       if (!(gv < MS.best[v])) return;
       if (V && !allowed(*V, M.vx[v], M.vy[v])) return;
       if (M.vflag[v] & JUNCTION) {
-        push_vertex(v, root, gv, 0, Lim{});
+        push_vertex(v, root, gv, 0, -1, Lim{});
         return;
       }
       const int p = M.vprev[v], q = M.vnext[v];
       const int sp = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[p], M.vy[p]);
       const int sq = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[q], M.vy[q]);
       const int restr = (sp >= 0 && sq >= 0) ? 1 : (sp <= 0 && sq <= 0) ? -1 : 0;
-      push_vertex(v, root, gv, restr, Lim{rx, ry, M.vx[v], M.vy[v]});
+      // the line root-v runs into the obstacle: no shortest path bends here (every way
+      // out of v turns away from the obstacle, and the root sees past v on both sides)
+      if (restr == 0) return;
+      // the edge of the corner nearest the ray beyond v (a turn of less than 180 degrees
+      // from it towards the obstacle): a shortest path bending at v leaves between that
+      // ray and this edge
+      const int turn = orient_d(M.vx[v], M.vy[v], M.vx[p], M.vy[p], M.vx[q], M.vy[q]);
+      const int e1 = turn == 0 ? -1 : restr * turn > 0 ? p : q;
+      // that edge runs on along the line root-v: the path goes straight on (no bend)
+      if (e1 >= 0 && orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[e1], M.vy[e1]) == 0) return;
+      push_vertex(v, root, gv, restr, e1, Lim{rx, ry, M.vx[v], M.vy[v]});
+    };
+    // Is polygon Z (around the corner of vertex node V) wholly beyond the line through
+    // the corner and its edge e1 (strictly, away from the ray beyond the corner)? Z lies
+    // in the cone at the corner between its two neighbours in Z (Z is convex).
+    auto beyond_edge = [&](const Node& V, int Z) {
+      const int off = M.poff[Z], m = M.poff[Z + 1] - off;
+      const int v = V.v, e = V.e1;
+      int i = 0;
+      while (i < m && M.pv[off + i] != v) ++i;
+      if (i == m) return false;
+      const int za = M.pv[off + (i + 1) % m], zb = M.pv[off + (i + m - 1) % m];
+      const double cx = M.vx[v], cy = M.vy[v], ex = M.vx[e], ey = M.vy[e];
+      return V.restr * orient_d(cx, cy, ex, ey, M.vx[za], M.vy[za]) > 0 &&
+             V.restr * orient_d(cx, cy, ex, ey, M.vx[zb], M.vy[zb]) > 0;
+    };
+    // does a bridge ending at vertex v separate polygon Z from every target polygon?
+    auto cut_off = [&](int v, int Z) {
+      for (int t = vboff[v]; t < vboff[v + 1]; ++t)
+        if (!target_side(MS, Z, vb[t])) return true;
+      return false;
     };
     // a root at point (x, y) (vertex v or -1): nodes for the far edges of its polygons
     auto expand_point = [&](int root, const std::vector<int>& fan, const Node* V) {
       const double rx = roots[root].x, ry = roots[root].y, g = roots[root].g;
       for (int Z : fan) {
+        if (V && V->restr != 0 && V->e1 >= 0 && beyond_edge(*V, Z)) continue;
+        if (V && prune && cut_off(V->v, Z)) continue;
         if (MS.tmark[Z] && (!V || allowed(*V, tx, ty))) push_final(root, g + dist(rx, ry, tx, ty));
         const int off = M.poff[Z], m = M.poff[Z + 1] - off;
         for (int i = 0; i < m; ++i) {  // the polygon's corners and junctions: in sight
