@@ -250,8 +250,17 @@ inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, doub
   return (top > 0) - (top < 0);
 }
 
-inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x, double b0y,
-                      double b1x, double b1y) {
+// the certified fallback of cross_sign (out of line: the filter stays small enough to inline)
+[[gnu::noinline]] inline int cross_sign_slow(double a0x, double a0y, double a1x, double a1y,
+                                             double b0x, double b0y, double b1x, double b1y,
+                                             double ux, double uy, double vx, double vy) {
+  int s = cross_sign_small(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, ux, uy, vx, vy);
+  if (s != 2) return s;
+  return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
+}
+
+[[gnu::always_inline]] inline int cross_sign(double a0x, double a0y, double a1x, double a1y,
+                                             double b0x, double b0y, double b1x, double b1y) {
   double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
   // A zero difference is exact (x - y == 0 only when x == y) and so is the sign of any
   // difference (also when it overflows to +-inf); a product with a zero factor is zero.
@@ -263,9 +272,7 @@ inline int cross_sign(double a0x, double a0y, double a1x, double a1y, double b0x
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
-  int s = cross_sign_small(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, ux, uy, vx, vy);
-  if (s != 2) return s;
-  return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
+  return cross_sign_slow(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, ux, uy, vx, vy);
 }
 
 // Exact sign of (a1 - a0) x (b1 - b0) for int64 coordinates with |x| < 2^62.
