@@ -32,9 +32,21 @@ Peers: extremitypathfinder and pyvisgraph on the random scenes up to ``--peer-ma
 mazes up to ``--peer-max-maze`` (the free space as one polygon; pyvisgraph takes no holes
 or touching obstacles and is skipped on grids).
 
+Real game maps (``--maps``, default: the six GPPC-2013 maps of ``../shared/data/maps``
+when that folder exists, read from there): StarCraft (Archipelago, BigGameHunters,
+Brushfire, 512 x 512) and Dragon Age 2 (ca_cave, dr_dungeon, ht_keep). ``--map-queries``
+queries spread evenly over each map's scenario file (every bucket, short to long), cell
+centre to cell centre; per map the preparation, the median, 95th percentile and largest
+query time (CPU), every path validated exactly, and the largest excess of its length over
+the scenario's octile optimum (rounded to 6 significant digits there: an any-angle path is
+never longer, up to that rounding). Context, not run here: Polyanya's published figure is
+about 1.5 ms per query averaged over the GPPC any-angle benchmark (Cui, Harabor and
+Grastien, IJCAI 2017, on their machine).
+
 Usage::
 
     python benchmarks/bench_planning.py            # the table of docs/planning.md
+    python benchmarks/bench_planning.py --mazes --caves --ks --checker   # the maps only
     python benchmarks/bench_planning.py --mazes 20 --caves --ks 100 --checker
 """
 
@@ -44,10 +56,12 @@ import argparse
 import math
 import statistics
 import time
+from pathlib import Path
 
 import numpy as np
 
 import minkowski2d as mk
+import minkowski2d.io  # noqa: F401 - mk.io
 
 CELL = 1000
 
@@ -287,6 +301,52 @@ def stats(name, label, n_obs, prep, times, paths, ref, check, qs):
     )
 
 
+MAPS = Path(__file__).resolve().parents[2] / "shared" / "data" / "maps"
+GAME_MAPS = ["Archipelago", "BigGameHunters", "Brushfire", "ca_cave", "dr_dungeon", "ht_keep"]
+
+
+def scenario(name: str, n: int) -> list:
+    """n queries spread over the map's scenario file: (start, goal, octile optimum)."""
+    rows = mk.io.read_scenario(MAPS / f"{name}.map.scen")
+    pick = np.linspace(0, len(rows) - 1, n).astype(int)
+    centre = lambda c: (c[0] + 0.5, c[1] + 0.5)  # noqa: E731
+    return [(centre(rows[i].start), centre(rows[i].goal), rows[i].optimal) for i in pick]
+
+
+def game_maps(names: list[str], n: int, reps: int) -> None:
+    print()
+    print(
+        "| map | cells (W x H) | mesh cells | preparation ms CPU | median query ms CPU "
+        "| p95 ms CPU | max ms CPU | invalid paths | over the octile optimum |"
+    )
+    print("|---|---|---|---|---|---|---|---|---|")
+    for name in names:
+        occ = mk.io.read_grid_map(MAPS / f"{name}.map")
+        sc = scenario(name, n)
+        qs = [(s, g) for s, g, _ in sc]
+        pl, prep, times, paths = run_ours(lambda occ=occ: mk.MotionPlanner.from_grid(occ), qs, reps)
+        check = pl._core.segment_free
+        bad = sum(p is None or not valid(check, p, s, g) for p, (s, g) in zip(paths, qs))
+        # the scenario's optimum is rounded to 6 significant digits
+        over = max(
+            length(p) - (o + 0.5 * 10.0 ** (math.floor(math.log10(o)) - 5))
+            for p, (_, _, o) in zip(paths, sc)
+            if p is not None
+        )
+        tc = np.array(times[1]) * 1e3
+        cells = len(pl.navmesh.cells) if pl.navmesh is not None else "-"
+        print(
+            f"| {name} | {occ.shape[1]} x {occ.shape[0]} | {cells} | {prep[1] * 1e3:.0f} | "
+            f"{np.median(tc):.2f} | {np.percentile(tc, 95):.2f} | {tc.max():.2f} | {bad}/{n} | "
+            f"{'none' if over <= 0 else f'{over:.1e}'} |",
+            flush=True,
+        )
+    print(
+        "context (published, not run here): Polyanya about 1.5 ms per query averaged over "
+        "the GPPC any-angle benchmark (Cui, Harabor and Grastien, IJCAI 2017)"
+    )
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--mazes", type=int, nargs="*", default=[20, 64], help="maze sizes (cells)")
@@ -302,6 +362,11 @@ def main() -> None:
     )  # fmt: skip
     ap.add_argument("--prep-reps", type=int, default=3, help="our builds per map (median)")
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument(
+        "--maps", nargs="*", default=GAME_MAPS if MAPS.is_dir() else [],
+        help="GPPC-2013 maps in ../shared/data/maps (default: all six there)",
+    )  # fmt: skip
+    ap.add_argument("--map-queries", type=int, default=200, help="queries per game map")
     args = ap.parse_args()
     print(
         "| tool | map | obstacles | preparation ms (wall / CPU) | median query ms (wall / CPU) "
@@ -372,6 +437,8 @@ def main() -> None:
             print(stats(pname, label, n_obs, prep, times, paths, ours, check, qs), flush=True)
     for note in notes:
         print(f"note: {note}")
+    if args.maps:
+        game_maps(args.maps, args.map_queries, args.prep_reps)
 
 
 if __name__ == "__main__":

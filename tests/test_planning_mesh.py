@@ -454,14 +454,10 @@ requires_maps = pytest.mark.skipif(
 
 def scenario(name: str, n: int) -> list:
     """n queries spread over the map's scenario file: (start, goal, octile optimum)."""
-    rows = [r.split() for r in (MAPS / f"{name}.map.scen").read_text().splitlines()[1:]]
-    rows = [r for r in rows if r]
+    rows = mk.io.read_scenario(MAPS / f"{name}.map.scen")
     pick = np.linspace(0, len(rows) - 1, n).astype(int)
-    return [
-        ((int(rows[i][4]) + 0.5, int(rows[i][5]) + 0.5),
-         (int(rows[i][6]) + 0.5, int(rows[i][7]) + 0.5), float(rows[i][8]))
-        for i in pick
-    ]  # fmt: skip
+    centre = lambda c: (c[0] + 0.5, c[1] + 0.5)  # noqa: E731
+    return [(centre(rows[i].start), centre(rows[i].goal), rows[i].optimal) for i in pick]
 
 
 @requires_maps
@@ -547,3 +543,29 @@ def test_bridge_pruning_keeps_lengths_and_prunes():
         assert math.isclose(res[True][1], res[False][1], rel_tol=1e-12), (s, g)
     core.prune = True
     assert nodes[False] > 1.4 * nodes[True], nodes
+
+
+def test_read_scenario(tmp_path):
+    f = tmp_path / "a.map.scen"
+    f.write_text("version 1\n3\tmaps/a.map\t4\t5\t0\t1\t3\t4\t4.24264\n\n")
+    (q,) = mk.io.read_scenario(f)
+    assert q == (3, "maps/a.map", 4, 5, (0, 1), (3, 4), 4.24264)
+    f.write_text("version 1\n3 a.map 4 5 0 1 3\n")
+    with pytest.raises(InputFormatError, match=r"line 2: expected 'bucket map"):
+        mk.io.read_scenario(f)
+    f.write_text("version 1\n3 a.map 4 5 0 x 3 4 4.2\n")
+    with pytest.raises(InputFormatError, match="line 2"):
+        mk.io.read_scenario(f)
+
+
+def test_io_after_import_minkowski2d_alone():
+    # `import minkowski2d as mk` then mk.io.read_grid_map, as the README writes it
+    import subprocess
+    import sys
+
+    code = (
+        "import minkowski2d as mk; "
+        "print(mk.io.read_grid_map.__name__, mk.io.read_scenario.__name__)"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["read_grid_map", "read_scenario"]

@@ -72,11 +72,12 @@ def __getattr__(name: str) -> Any:
         from .animation import animate
 
         return animate
-    if name == "plot":
+    if name in ("plot", "io"):
         import importlib
 
-        # a callable module: mk.plot(obj, ax=None, **kwargs); matplotlib loads on drawing
-        return importlib.import_module(".plot", __name__)
+        # plot: a callable module, mk.plot(obj, ax=None, **kwargs), matplotlib loads on
+        # drawing; io: the readers and writers (mk.io.read_grid_map after import mk)
+        return importlib.import_module("." + name, __name__)
     raise AttributeError(f"module 'minkowski2d' has no attribute {name!r}")
 
 

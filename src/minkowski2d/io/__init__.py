@@ -20,7 +20,7 @@ from .cgal_dat import parse_cgal_dat, read_cgal_dat
 from .common import Feature, UnboundedPolygon, split_selector
 from .dxf import read_dxf
 from .features import read_features
-from .grid import parse_grid_map, read_grid_map
+from .grid import ScenarioQuery, parse_grid_map, parse_scenario, read_grid_map, read_scenario
 from .read import parse_geometry, read_geometry
 from .write import FORMATS, format_geometry
 
@@ -38,4 +38,7 @@ __all__ = [
     "read_dxf",
     "read_grid_map",
     "parse_grid_map",
+    "read_scenario",
+    "parse_scenario",
+    "ScenarioQuery",
 ]

@@ -1,8 +1,10 @@
-"""Grid maps: the Moving AI pathfinding benchmarks' ``.map`` format, as an occupancy grid."""
+"""Grid maps: the Moving AI pathfinding benchmarks' ``.map`` format, as an occupancy grid,
+and their ``.scen`` scenario files."""
 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -100,3 +102,73 @@ def parse_grid_map(text: str, name: str = "input") -> np.ndarray:
                     k + r + 1,
                 )
     return occ
+
+
+class ScenarioQuery(NamedTuple):
+    """One line of a Moving AI ``.scen`` file (:func:`read_scenario`): the start and goal
+    cells as (column, row), and the optimal 8-connected length between their centres
+    without corner cutting, as the file gives it (rounded there)."""
+
+    bucket: int
+    map: str
+    width: int
+    height: int
+    start: tuple[int, int]
+    goal: tuple[int, int]
+    optimal: float
+
+
+def read_scenario(source: str | Path) -> list[ScenarioQuery]:
+    r"""The queries of a Moving AI scenario file (``.scen``, version 1).
+
+    Each line after ``version 1`` is ``bucket map width height sx sy gx gy optimal``
+    (tab- or space-separated). Plan between the cell centres: ``(sx + 0.5, sy + 0.5)``
+    on :meth:`minkowski2d.MotionPlanner.from_grid` of :func:`read_grid_map`'s grid; an
+    any-angle path is never longer than ``optimal`` (up to the file's rounding).
+
+    Raises
+    ------
+    InputFormatError
+        The file cannot be read, or a line has not nine fields of these types: the
+        message names the line.
+
+    Examples
+    --------
+    >>> import tempfile, os
+    >>> f = os.path.join(tempfile.mkdtemp(), "a.map.scen")
+    >>> _ = open(f, "w").write("version 1\n0\ta.map\t3\t2\t0\t0\t2\t1\t2.41421\n")
+    >>> q = read_scenario(f)[0]
+    >>> q.start, q.goal, q.optimal
+    ((0, 0), (2, 1), 2.41421)
+    """
+    return parse_scenario(_read_text(source), str(source))
+
+
+def parse_scenario(text: str, name: str = "input") -> list[ScenarioQuery]:
+    r""":func:`read_scenario` on the text of a ``.scen`` file (``name`` for messages).
+
+    Examples
+    --------
+    >>> parse_scenario("version 1\n1 m.map 4 4 0 0 3 3 4.24264\n")[0].bucket
+    1
+    """
+    hint = "a .scen file is 'version 1', then lines 'bucket map W H sx sy gx gy optimal'"
+    out = []
+    for k, line in enumerate(text.splitlines()):
+        parts = line.split()
+        if not parts or (k == 0 and parts[0].lower() == "version"):
+            continue
+        try:
+            if len(parts) != 9:
+                raise ValueError(f"{len(parts)} fields")
+            b, w, h, sx, sy, gx, gy = (int(parts[i]) for i in (0, 2, 3, 4, 5, 6, 7))
+            opt = float(parts[8])
+        except ValueError as exc:
+            raise InputFormatError(
+                f"{name}: line {k + 1}: expected 'bucket map W H sx sy gx gy optimal' "
+                f"(ints, then a number), got {_short(line)} ({exc})",
+                argument=name,
+                hint=hint,
+            ) from None
+        out.append(ScenarioQuery(b, parts[1], w, h, (sx, sy), (gx, gy), opt))
+    return out
