@@ -687,14 +687,32 @@ CALLS = {
 }
 
 
+#: junk that no argument of CALLS accepts (the rest of JUNK is valid for some: None is a
+#: default, 5 a distance, [] an empty batch, 10**400 an exact int)
+NEVER_VALID = [
+    "abc",
+    b"x",
+    {"a": 1},
+    object(),
+    [[None, 1]],
+    [["1", "2"]],
+    [(1j, 0)],
+    math.nan,
+    [(math.inf, 0), (1, 0), (0, 1)],
+]
+
+
 @pytest.mark.parametrize("name", list(CALLS))
 def test_junk_arguments_are_geometry_errors(name):
+    # any junk is accepted or refused with a GeometryError (never another exception);
+    # what is never valid is refused
     import warnings
 
-    for junk in JUNK:
+    for junk in JUNK + NEVER_VALID:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # numpy's own warnings on junk are not the point
             try:
                 CALLS[name](junk)
             except GeometryError:
-                pass
+                continue
+        assert not any(junk is j for j in NEVER_VALID), (name, junk)
