@@ -37,9 +37,9 @@
 // no smaller length is not expanded again), the pruning at the mesh's bridges (below,
 // MeshPlanner) and the admissible heuristic of Polyanya (the shortest
 // root-interval-target distance, the target mirrored across the edge when on the root's
-// side) make it A*. Lengths are
-// doubles: as in the visibility graph, two paths whose lengths differ only by rounding
-// may be chosen either way; validity never depends on them.
+// side) make it A*. Lengths are doubles: as in the visibility graph, two paths whose
+// lengths differ only by rounding may be chosen either way; validity never depends on
+// them.
 #pragma once
 
 #include <algorithm>
@@ -150,6 +150,18 @@ inline bool has_zero_width(const Planner<double>& B) {
     s = e;
   }
   return false;
+}
+
+// (row, item) pairs as CSR: off (n + 1 offsets) and, per row, its items in the pairs' order
+template <class T>
+inline void csr_from_pairs(int n, const std::vector<std::pair<int, T>>& pairs,
+                           std::vector<int>& off, std::vector<T>& items) {
+  off.assign(n + 1, 0);
+  for (const auto& pr : pairs) ++off[pr.first + 1];
+  for (int r = 0; r < n; ++r) off[r + 1] += off[r];
+  items.resize(pairs.size());
+  std::vector<int> fill(off.begin(), off.end() - 1);
+  for (const auto& pr : pairs) items[fill[pr.first]++] = pr.second;
 }
 
 struct NavMesh {
@@ -467,16 +479,11 @@ struct NavMesh {
     merge_convex();
     link();
     // polygons around each vertex
-    const int P = npoly();
-    vpoff.assign(nv + 1, 0);
-    for (int i = 0; i < (int)pv.size(); ++i) ++vpoff[pv[i] + 1];
-    for (int q = 0; q < nv; ++q) vpoff[q + 1] += vpoff[q];
-    vp.assign(pv.size(), 0);
-    {
-      std::vector<int> fill(vpoff.begin(), vpoff.end() - 1);
-      for (int p = 0; p < P; ++p)
-        for (int i = poff[p]; i < poff[p + 1]; ++i) vp[fill[pv[i]]++] = p;
-    }
+    std::vector<std::pair<int, int>> around;
+    around.reserve(pv.size());
+    for (int p = 0; p < npoly(); ++p)
+      for (int i = poff[p]; i < poff[p + 1]; ++i) around.push_back({pv[i], p});
+    csr_from_pairs(nv, around, vpoff, vp);
     build_grid();
     return MESH_OK;
   }
@@ -623,36 +630,25 @@ struct MeshPlanner {
 
   void find_bridges() {
     const int P = M.npoly(), H = (int)M.pv.size(), NV = M.nvert();
-    // adjacency (neighbour, edge id): mesh edges by their lower slot, junction links
-    // numbered from H
-    std::vector<int> aoff(P + 1, 0);
-    std::vector<std::pair<int, int>> links;  // (p, q, id) for junctions: star at vp[0]
-    std::vector<int> lid;
-    for (int v = 0; v < NV; ++v)
-      if (M.vflag[v] & JUNCTION)
-        for (int t = M.vpoff[v] + 1; t < M.vpoff[v + 1]; ++t) {
-          links.push_back({M.vp[M.vpoff[v]], M.vp[t]});
-          lid.push_back(H + (int)links.size() - 1);
-        }
     std::vector<int> owner(H);
     for (int p = 0; p < P; ++p)
-      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) {
-        owner[i] = p;
-        aoff[p + 1] += M.pn[i] >= 0;
-      }
-    for (const auto& l : links) ++aoff[l.first + 1], ++aoff[l.second + 1];
-    for (int p = 0; p < P; ++p) aoff[p + 1] += aoff[p];
-    std::vector<std::pair<int, int>> adj(aoff[P]);
-    std::vector<int> fill(aoff.begin(), aoff.end() - 1);
+      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) owner[i] = p;
+    auto twin = [&](int i) { return M.poff[M.pn[i]] + M.pe[i]; };
+    // adjacency (polygon, (neighbour, edge id)): a mesh edge by its lower slot, the
+    // links around a junction (a star at its first polygon) numbered from H
+    std::vector<std::pair<int, std::pair<int, int>>> arcs;
     for (int i = 0; i < H; ++i)
-      if (M.pn[i] >= 0) {
-        const int q = M.pn[i], j = M.poff[q] + M.pe[i];
-        adj[fill[owner[i]]++] = {q, std::min(i, j)};
-      }
-    for (std::size_t k = 0; k < links.size(); ++k) {
-      adj[fill[links[k].first]++] = {links[k].second, lid[k]};
-      adj[fill[links[k].second]++] = {links[k].first, lid[k]};
-    }
+      if (M.pn[i] >= 0) arcs.push_back({owner[i], {M.pn[i], std::min(i, twin(i))}});
+    int link = H;
+    for (int v = 0; v < NV; ++v)
+      if (M.vflag[v] & JUNCTION)
+        for (int t = M.vpoff[v] + 1; t < M.vpoff[v + 1]; ++t, ++link) {
+          arcs.push_back({M.vp[M.vpoff[v]], {M.vp[t], link}});
+          arcs.push_back({M.vp[t], {M.vp[M.vpoff[v]], link}});
+        }
+    std::vector<int> aoff;
+    std::vector<std::pair<int, int>> adj;
+    csr_from_pairs(P, arcs, aoff, adj);
     // iterative Tarjan: tin / low, a tree edge (parent, child) is a bridge when
     // low[child] > tin[parent]
     ptin.assign(P, -1);
@@ -685,34 +681,18 @@ struct MeshPlanner {
         if (stack.empty()) continue;
         const int par = stack.back();
         low[par] = std::min(low[par], low[p]);
-        if (low[p] > ptin[par] && pedge[p] < H) {
-          const int i = pedge[p], j = M.poff[M.pn[i]] + M.pe[i];
-          bsub[i] = bsub[j] = p;
-        }
+        if (low[p] > ptin[par] && pedge[p] < H) bsub[pedge[p]] = bsub[twin(pedge[p])] = p;
       }
     }
-    vboff.assign(NV + 1, 0);
-    auto ends = [&](int i, int& a, int& b) {
-      const int p = owner[i];
-      a = M.pv[i];
-      b = M.pv[i + 1 < M.poff[p + 1] ? i + 1 : M.poff[p]];
-    };
+    // the bridges at each vertex: both ends of every bridge edge, once per edge
+    std::vector<std::pair<int, int>> at;
     for (int i = 0; i < H; ++i)
-      if (bsub[i] >= 0 && i < M.poff[M.pn[i]] + M.pe[i]) {
-        int a, b;
-        ends(i, a, b);
-        ++vboff[a + 1], ++vboff[b + 1];
+      if (bsub[i] >= 0 && i < twin(i)) {
+        const int p = owner[i], j = i + 1 < M.poff[p + 1] ? i + 1 : M.poff[p];
+        at.push_back({M.pv[i], bsub[i]});
+        at.push_back({M.pv[j], bsub[i]});
       }
-    for (int v = 0; v < NV; ++v) vboff[v + 1] += vboff[v];
-    vb.assign(vboff[NV], -1);
-    std::vector<int> vf(vboff.begin(), vboff.end() - 1);
-    for (int i = 0; i < H; ++i)
-      if (bsub[i] >= 0 && i < M.poff[M.pn[i]] + M.pe[i]) {
-        int a, b;
-        ends(i, a, b);
-        vb[vf[a]++] = bsub[i];
-        vb[vf[b]++] = bsub[i];
-      }
+    csr_from_pairs(NV, at, vboff, vb);
   }
 
   int build(const double* meshbox) {
@@ -936,7 +916,7 @@ struct MeshPlanner {
     auto expand_point = [&](int root, const std::vector<int>& fan, const Node* V) {
       const double rx = roots[root].x, ry = roots[root].y, g = roots[root].g;
       for (int Z : fan) {
-        if (V && V->restr != 0 && V->e1 >= 0 && beyond_edge(*V, Z)) continue;
+        if (V && V->e1 >= 0 && beyond_edge(*V, Z)) continue;
         if (V && prune && cut_off(V->v, Z)) continue;
         if (MS.tmark[Z] && (!V || allowed(*V, tx, ty))) push_final(root, g + dist(rx, ry, tx, ty));
         const int off = M.poff[Z], m = M.poff[Z + 1] - off;
