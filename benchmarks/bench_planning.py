@@ -9,7 +9,10 @@ Maps generated like game maps, seeded:
   automaton, border blocked);
 * ``random K``: K convex obstacles (4-8 vertices, int coordinates) inside a square
   workspace, one per cell of a jittered grid (no two touch, which the peers require);
-* ``K checkerboard``: unit squares touching at their corners only (pinch points).
+* ``K checkerboard``: unit squares touching at their corners only (pinch points);
+* ``touching K``: K rectangles, one per cell of a grid, each side either on its cell's
+  border (probability 0.3) or 5-30 % inside it: neighbours touch along parts of edges and
+  the border ones touch the workspace box (zero-width passages, on the mesh's network).
 
 Grids are planned with ``MotionPlanner.from_grid`` (blocked cells merged into rectangles,
 one obstacle: walls have no gaps between blocks). A point robot; Q random start/goal pairs
@@ -66,13 +69,17 @@ import minkowski2d.io  # noqa: F401 - mk.io
 CELL = 1000
 
 
-def scene(K: int, seed: int) -> tuple[list[np.ndarray], tuple[int, int, int, int]]:
+def grid_cells(K: int, seed: int):
+    """The generator, the grid's side n and K distinct random cells (i, j) of n x n."""
     rng = np.random.default_rng(seed)
     n = math.ceil(math.sqrt(K))
-    cells = rng.permutation(n * n)[:K]
+    return rng, n, [divmod(int(c), n) for c in rng.permutation(n * n)[:K]]
+
+
+def scene(K: int, seed: int) -> tuple[list[np.ndarray], tuple[int, int, int, int]]:
+    rng, n, cells = grid_cells(K, seed)
     obs = []
-    for c in cells:
-        i, j = divmod(int(c), n)
+    for i, j in cells:
         r = rng.uniform(0.2, 0.45) * CELL
         jit = (0.5 * CELL - r) * 0.9
         cx = (i + 0.5) * CELL + rng.uniform(-jit, jit)
@@ -99,6 +106,19 @@ def checkerboard(K: int, seed: int) -> tuple[list[np.ndarray], tuple[int, int, i
             if (i + j) % 2 == 0 and len(obs) < K:
                 x, y = i * CELL, j * CELL
                 obs.append(np.array([[x, y], [x + CELL, y], [x + CELL, y + CELL], [x, y + CELL]]))
+    return obs, (0, 0, n * CELL, n * CELL)
+
+
+def touching(K: int, seed: int) -> tuple[list[np.ndarray], tuple[int, int, int, int]]:
+    """K rectangles on a grid of cells, sides on the cell border with probability 0.3:
+    neighbours share parts of edges, border cells share edges with the box."""
+    rng, n, cells = grid_cells(K, seed)
+    obs = []
+    for i, j in cells:
+        inset = np.where(rng.random(4) < 0.3, 0, rng.integers(CELL // 20, 3 * CELL // 10, 4))
+        x0, y0 = i * CELL + inset[0], j * CELL + inset[1]
+        x1, y1 = (i + 1) * CELL - inset[2], (j + 1) * CELL - inset[3]
+        obs.append(np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], np.int64))
     return obs, (0, 0, n * CELL, n * CELL)
 
 
@@ -353,6 +373,7 @@ def main() -> None:
     ap.add_argument("--caves", type=int, nargs="*", default=[256], help="cave sizes")
     ap.add_argument("--ks", type=int, nargs="*", default=[100, 1000, 10000], help="random K")
     ap.add_argument("--checker", type=int, nargs="*", default=[50], help="checkerboard K")
+    ap.add_argument("--touching", type=int, nargs="*", default=[10000], help="touching K")
     ap.add_argument("--queries", type=int, default=100)
     ap.add_argument("--peer-max-k", type=int, default=100, help="peers on random K up to this")
     ap.add_argument("--peer-max-maze", type=int, default=20, help="extremitypathfinder mazes")
@@ -379,6 +400,7 @@ def main() -> None:
         + [("cave", n) for n in args.caves]
         + [("random", k) for k in args.ks]
         + [("checker", k) for k in args.checker]
+        + [("touching", k) for k in args.touching]
     )
     for kind, n in runs:
         seed = args.seed + n
@@ -392,9 +414,12 @@ def main() -> None:
             def make(method="auto", occ=occ):
                 return mk.MotionPlanner.from_grid(occ, method=method)
         else:
-            obs, box = (scene if kind == "random" else checkerboard)(n, seed)
+            gen = {"random": scene, "checker": checkerboard, "touching": touching}[kind]
+            obs, box = gen(n, seed)
             qs = queries(obs, box, args.queries, seed)
-            label = f"random {n}" if kind == "random" else f"checkerboard {n}"
+            label = {"random": f"random {n}", "checker": f"checkerboard {n}"}.get(
+                kind, f"touching {n}"
+            )
             n_obs = str(len(obs))
 
             def make(method="auto", obs=obs, box=box):
@@ -418,7 +443,7 @@ def main() -> None:
             poly = maze_free_polygon(occ)
             if poly is not None:
                 peers = [("extremitypathfinder", run_epf, (poly[1], None, qs, poly[0]))]
-        elif kind in ("random", "checker") and n <= args.peer_max_k:
+        elif kind in ("random", "checker", "touching") and n <= args.peer_max_k:
             peers = [
                 ("extremitypathfinder", run_epf, (obs, box, qs)),
                 ("pyvisgraph", run_pvg, (obs, box, qs)),

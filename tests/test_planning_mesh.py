@@ -89,11 +89,13 @@ def test_seam_of_one_obstacle_blocks_and_touching_obstacles_do_not():
     pl = mk.MotionPlanner([L], workspace=(-2, -2, 5, 5), method="mesh")
     orc = oracle_of(pl)
     check_many(pl, orc, [((2, 2), (-1, -1)), ((4, 4), (0.5, -1))])
-    # two obstacles sharing an edge: a zero-width passage (kept by the visibility graph)
-    with pytest.raises(OptionError, match="zero-width"):
-        mk.MotionPlanner([sq(0, 0, 1, 1), sq(1, 0, 2, 1)], method="mesh")
-    pl = mk.MotionPlanner([sq(0, 0, 1, 1), sq(1, 0, 2, 1)])
+    # two obstacles sharing an edge: a zero-width passage, on the mesh's network
+    pl = mk.MotionPlanner([sq(0, 0, 1, 1), sq(1, 0, 2, 1)], method="mesh")
+    assert pl.planned_by == "mesh"
+    assert pl._core.zero_width().tolist() == [[1, 0, 1, 1]]
     assert pl.shortest_path((1, -1), (1, 2)).points.tolist() == [[1, -1], [1, 2]]
+    orc = oracle_of(pl)
+    check_many(pl, orc, [((0.5, -1), (1.5, 2)), ((1, 0.5), (1.5, 2)), ((-1, 0.5), (1, 0.7))])
 
 
 def test_inexact_crossing_falls_back():
@@ -521,6 +523,64 @@ def _cave(n, seed):
         walls = sum(p[1 + a : n + 1 + a, 1 + b : n + 1 + b] for a in (-1, 0, 1) for b in (-1, 0, 1))
         occ = walls >= 5
     return occ
+
+
+# --------------------------------------------------------------------------------------
+# zero-width passages: obstacles touching along edges, and the workspace box
+
+
+@st.composite
+def tiles(draw):
+    """Rectangles and right triangles on a 0..6 lattice in the box (0, 0, 6, 6): edges
+    shared between obstacles and with the box are the rule, overlaps (a third obstacle
+    across a shared edge) and diagonal contacts common."""
+    out = []
+    for _ in range(draw(st.integers(2, 7))):
+        x0, x1 = sorted(draw(st.lists(st.integers(0, 6), min_size=2, max_size=2, unique=True)))
+        y0, y1 = sorted(draw(st.lists(st.integers(0, 6), min_size=2, max_size=2, unique=True)))
+        shape = draw(st.integers(0, 4))
+        if shape == 0 or shape == 4:
+            out.append(sq(x0, y0, x1, y1))
+        else:  # half a square, cut along a diagonal (crossings stay dyadic)
+            d = min(x1 - x0, y1 - y0)
+            x1, y1 = x0 + d, y0 + d
+            c = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+            out.append([c[(shape + t) % 4] for t in range(3)])
+    return out
+
+
+@settings(max_examples=60 * _X, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(obs=tiles(), data=st.data(), robot=st.sampled_from([None, [(0, 0), (1, 0), (1, 1), (0, 1)]]))
+def test_zero_width_passages_against_oracle_and_visibility(obs, data, robot):
+    # starts and goals at lattice and half-lattice points: on the shared edges (inside
+    # a segment and at its ends), at the box, inside obstacles, in the open
+    pt = st.tuples(st.integers(-2, 14), st.integers(-2, 14)).map(lambda p: (p[0] / 2, p[1] / 2))
+    pairs = data.draw(st.lists(st.tuples(pt, pt), min_size=1, max_size=6))
+    ws = (0, 0, 6, 6)
+    pl = mk.MotionPlanner(obs, robot=robot, workspace=ws, method="mesh")
+    assert pl.planned_by == "mesh"
+    check_many(pl, oracle_of(pl), pairs)
+    vis = mk.MotionPlanner(obs, robot=robot, workspace=ws, method="visibility")
+    same_as_visibility(pl, vis, pairs)
+
+
+def test_zero_width_network_bends_branches_and_meets_the_box():
+    # a wall of blocks across the box, touching each other and the box: the only ways
+    # through run along the shared edges and the box's sides
+    obs = [sq(0, 4, 3, 5), sq(3, 4, 6, 6), sq(6, 3, 10, 6), sq(3, 2, 4, 4), sq(4, 2, 6, 4)]
+    ws = (0, 0, 10, 10)
+    pl = mk.MotionPlanner(obs, workspace=ws, method="mesh")
+    segs = {tuple(map(float, s)) for s in pl._core.zero_width().tolist()}
+    assert (3.0, 4.0, 3.0, 5.0) in segs and (0.0, 4.0, 0.0, 5.0) in segs  # block, box
+    assert (4.0, 2.0, 4.0, 4.0) in segs and (10.0, 3.0, 10.0, 6.0) in segs
+    orc = oracle_of(pl)
+    pts = [(1, 1), (8, 8), (0, 4.5), (3, 4.5), (3.5, 4), (10, 4), (5, 9), (9, 1), (4, 3)]
+    pairs = [(a, b) for a in pts for b in pts if a != b]
+    check_many(pl, orc, pairs)
+    same_as_visibility(pl, mk.MotionPlanner(obs, workspace=ws, method="visibility"), pairs)
+    # along the box's left side under the first block, then along the block seam
+    p = pl.shortest_path((1, 1), (8, 8))
+    assert p.points.tolist()[1:3] == [[0, 4], [0, 5]] or len(p.points) > 2
 
 
 def test_bridge_pruning_keeps_lengths_and_prunes():

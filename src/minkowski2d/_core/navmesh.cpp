@@ -78,7 +78,7 @@ void bind_mesh_planner(nb::module_& m) {
                mk::PlanScratch S;
                S.init((std::size_t)self.base.items());
                mk::MeshScratch MS;
-               MS.init(self.M.nvert(), self.M.npoly());
+               MS.init(self.nids(), self.M.npoly());
                std::vector<double> out;
                const double* s = S0.data();
                const double* g = G0.data();
@@ -128,6 +128,15 @@ void bind_mesh_planner(nb::module_& m) {
              return nb::make_tuple(to_numpy(xy, M.vx.size(), 2), to_numpy(off, off.size(), 0),
                                    to_numpy(pv, pv.size(), 0), to_numpy(fl, fl.size(), 0));
            })
+      // the zero-width segments (k, 4): (ax, ay, bx, by) each
+      .def("zero_width",
+           [](const MP& self) {
+             std::vector<double> seg;
+             for (std::size_t k = 0; k < self.net.ea.size(); ++k)
+               seg.insert(seg.end(), {self.idx(self.net.ea[k]), self.idy(self.net.ea[k]),
+                                      self.idx(self.net.eb[k]), self.idy(self.net.eb[k])});
+             return to_numpy(seg, seg.size() / 4, 4);
+           })
       // (nodes expanded, nodes pushed) by the last query
       .def("counters",
            [](const MP& self) { return nb::make_tuple(self.n_expanded, self.n_pushed); })
@@ -135,7 +144,6 @@ void bind_mesh_planner(nb::module_& m) {
       .def_ro("status", &MP::status);
   m.attr("MESH_OK") = (int)mk::MESH_OK;
   m.attr("MESH_INEXACT") = (int)mk::MESH_INEXACT;
-  m.attr("MESH_ZERO_WIDTH") = (int)mk::MESH_ZERO_WIDTH;
   m.attr("MESH_FAILED") = (int)mk::MESH_FAILED;
 }
 

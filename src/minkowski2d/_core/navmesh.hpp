@@ -7,9 +7,9 @@
 // piece): the exact overlay (overlay.hpp) computes its boundary as exact edges, inside on
 // the left. The mesh is made only when every boundary vertex is a double (piece vertices
 // always are; a crossing of two piece edges must round to itself, which is decided
-// exactly) and when no zero-width part exists (no two pieces of different groups, or a
-// piece and the outside of a closed box, share an edge segment from opposite sides):
-// otherwise build() says so and the caller keeps the visibility graph. The boundary is
+// exactly): otherwise build() says so and the caller keeps the visibility graph. The
+// zero-width parts (segments shared by two groups, or a group and a closed box) are a
+// graph beside the mesh (navnet.hpp), met at its portals (PORTAL). The boundary is
 // traced into simple rings (split where a ring would meet itself), triangulated by
 // polygon.hpp / triangulate.hpp (exact, constrained Delaunay), and the triangles are
 // merged into convex polygons (Hertel-Mehlhorn, strictly convex merges only). Every
@@ -37,9 +37,12 @@
 // no smaller length is not expanded again), the pruning at the mesh's bridges (below,
 // MeshPlanner) and the admissible heuristic of Polyanya (the shortest
 // root-interval-target distance, the target mirrored across the edge when on the root's
-// side) make it A*. Lengths are doubles: as in the visibility graph, two paths whose
-// lengths differ only by rounding may be chosen either way; validity never depends on
-// them.
+// side) make it A*. On the network: a portal in sight is a vertex node (one that only
+// goes on along the segments where no path bends there in the mesh); a node moves along
+// a segment to its other end; a mesh vertex reached that way expands its whole fan; a
+// start or goal on a segment attaches to its ends. Lengths are doubles: as in the
+// visibility graph, two paths whose lengths differ only by rounding may be chosen
+// either way; validity never depends on them.
 #pragma once
 
 #include <algorithm>
@@ -53,6 +56,7 @@
 
 #include "exact.hpp"
 #include "exactnum.hpp"
+#include "navnet.hpp"
 #include "overlay.hpp"
 #include "planning.hpp"
 #include "polygon.hpp"
@@ -63,93 +67,14 @@ namespace mk {
 enum MeshStatus : int {
   MESH_OK = 0,
   MESH_INEXACT = 1,     // a boundary vertex (a crossing of piece edges) is not a double
-  MESH_ZERO_WIDTH = 2,  // the free space has zero-width parts (kept by the visibility graph)
   MESH_FAILED = 3,      // an internal check failed (the caller keeps the visibility graph)
 };
 
-enum MeshFlag : std::uint8_t { CORNER = 1, JUNCTION = 2 };
+// PORTAL: an end of a zero-width segment (navnet.hpp) on the mesh
+enum MeshFlag : std::uint8_t { CORNER = 1, JUNCTION = 2, PORTAL = 4 };
 
 inline int orient_d(double ax, double ay, double bx, double by, double cx, double cy) {
   return cross_sign(ax, ay, bx, by, ax, ay, cx, cy);
-}
-
-// Do two solid pieces of different groups (or a piece and the outside of a closed box)
-// share an edge segment of positive length from opposite sides? Such a segment is free
-// (touching is allowed) but has no area: the mesh cannot hold it. Conservative: a
-// segment covered by a third group's interior also counts. Edges are sorted by their
-// supporting line (exact: direction by cross sign, offset by orient, then position).
-inline bool has_zero_width(const Planner<double>& B) {
-  struct E {
-    double ax, ay, bx, by;
-    int grp;
-    bool fwd;
-  };
-  auto lexless = [](double ax, double ay, double bx, double by) {
-    return ay < by || (ay == by && ax < bx);
-  };
-  std::vector<E> es;
-  const double* v = B.pc.data();
-  auto add = [&](double ax, double ay, double bx, double by, int grp) {
-    if (lexless(ax, ay, bx, by))
-      es.push_back(E{ax, ay, bx, by, grp, true});
-    else
-      es.push_back(E{bx, by, ax, ay, grp, false});
-  };
-  for (i64 p = 0; p < B.P; ++p)
-    for (i64 i = B.poff[p]; i < B.poff[p + 1]; ++i) {
-      i64 j = i + 1 < B.poff[p + 1] ? i + 1 : B.poff[p];
-      add(v[2 * i], v[2 * i + 1], v[2 * j], v[2 * j + 1], B.pgrp[p]);
-    }
-  if (B.has_box && !B.open_box) {  // the outside of a closed box: on the left of these
-    const double x0 = B.bx0, y0 = B.by0, x1 = B.bx1, y1 = B.by1;
-    if (x0 < x1) {
-      add(x1, y0, x0, y0, -1);
-      add(x0, y1, x1, y1, -1);
-    }
-    if (y0 < y1) {
-      add(x1, y1, x1, y0, -1);
-      add(x0, y0, x0, y1, -1);
-    }
-  }
-  std::sort(es.begin(), es.end(), [&](const E& e, const E& f) {
-    int c = cross_sign(e.ax, e.ay, e.bx, e.by, f.ax, f.ay, f.bx, f.by);
-    if (c != 0) return c > 0;
-    int o = orient_d(e.ax, e.ay, e.bx, e.by, f.ax, f.ay);
-    if (o != 0) return o > 0;
-    return lexless(e.ax, e.ay, f.ax, f.ay);
-  });
-  const std::size_t n = es.size();
-  struct Top {
-    double x, y;
-    int grp;
-  };
-  for (std::size_t s = 0; s < n;) {
-    std::size_t e = s + 1;
-    while (e < n && cross_sign(es[s].ax, es[s].ay, es[s].bx, es[s].by, es[e].ax, es[e].ay,
-                               es[e].bx, es[e].by) == 0 &&
-           orient_d(es[s].ax, es[s].ay, es[s].bx, es[s].by, es[e].ax, es[e].ay) == 0)
-      ++e;
-    // the two largest ends (of distinct groups) per direction among intervals begun
-    std::vector<Top> top[2];
-    for (std::size_t k = s; k < e; ++k) {
-      const E& I = es[k];
-      for (const Top& t : top[I.fwd ? 0 : 1])
-        if (t.grp != I.grp && lexless(I.ax, I.ay, t.x, t.y)) return true;
-      std::vector<Top>& T = top[I.fwd ? 1 : 0];
-      bool found = false;
-      for (Top& t : T)
-        if (t.grp == I.grp) {
-          if (lexless(t.x, t.y, I.bx, I.by)) t.x = I.bx, t.y = I.by;
-          found = true;
-        }
-      if (!found) T.push_back(Top{I.bx, I.by, I.grp});
-      std::sort(T.begin(), T.end(),
-                [&](const Top& a, const Top& b) { return lexless(b.x, b.y, a.x, a.y); });
-      if (T.size() > 2) T.resize(2);
-    }
-    s = e;
-  }
-  return false;
 }
 
 // (row, item) pairs as CSR: off (n + 1 offsets) and, per row, its items in the pairs' order
@@ -586,6 +511,7 @@ struct MeshNode {
   int poly, k, v;
   int restr;  // vertex: 0 none, +1 / -1: allowed where restr * side(R) >= 0
   int e1;     // vertex with restr: the corner's boundary neighbour nearest the ray beyond
+  int net;    // vertex: 1 on along the zero-width segments only (no polygon expanded)
   Lim L, R;
 };
 
@@ -596,6 +522,9 @@ struct MeshScratch {
   std::vector<int> touched;   // vertices whose best was set
   std::vector<char> tmark;    // per polygon: contains the target
   std::vector<int> spolys, tpolys;
+  std::vector<int> ppolys;    // the bridge pruning's targets (tpolys, or the polygons
+                              // around the portals of the goal's zero-width network)
+  std::vector<std::pair<int, double>> satt, gatt;  // start / goal on the network: ends
   std::vector<int> fan;       // the search's own buffers, kept between queries
   std::vector<std::pair<double, int>> heap;
   void init(int nv, int np) {
@@ -608,6 +537,7 @@ struct MeshScratch {
 struct MeshPlanner {
   Planner<double> base;
   NavMesh M;
+  NavNet net;  // the zero-width segments (navnet.hpp)
   int status = MESH_FAILED;
   double mb[4] = {0, 0, 0, 0};
   // counters of the last query (tests and benchmarks)
@@ -646,6 +576,25 @@ struct MeshPlanner {
           arcs.push_back({M.vp[M.vpoff[v]], {M.vp[t], link}});
           arcs.push_back({M.vp[t], {M.vp[M.vpoff[v]], link}});
         }
+    // a zero-width network joins all polygons around its portals (a star likewise)
+    {
+      std::vector<std::pair<int, int>> cp;  // (component, polygon)
+      for (int v = 0; v < NV; ++v)
+        if (M.vflag[v] & PORTAL)
+          for (int t = M.vpoff[v]; t < M.vpoff[v + 1]; ++t) cp.push_back({net.comp[v], M.vp[t]});
+      std::sort(cp.begin(), cp.end());
+      std::size_t h = 0;  // the component's first entry
+      for (std::size_t t = 0; t < cp.size(); ++t) {
+        if (t == 0 || cp[t].first != cp[t - 1].first) {
+          h = t;
+          continue;
+        }
+        if (cp[t] == cp[t - 1] || cp[t].second == cp[h].second) continue;
+        arcs.push_back({cp[h].second, {cp[t].second, link}});
+        arcs.push_back({cp[t].second, {cp[h].second, link}});
+        ++link;
+      }
+    }
     std::vector<int> aoff;
     std::vector<std::pair<int, int>> adj;
     csr_from_pairs(P, arcs, aoff, adj);
@@ -698,16 +647,58 @@ struct MeshPlanner {
   int build(const double* meshbox) {
     base.build_base();
     for (int q = 0; q < 4; ++q) mb[q] = meshbox[q];
-    if (has_zero_width(base)) return status = MESH_ZERO_WIDTH;
     status = M.build(base, mb);
-    if (status == MESH_OK) find_bridges();
+    if (status != MESH_OK) return status;
+    build_navnet(base, M.vx, M.vy, net);
+    for (int v = 0; v < M.nvert(); ++v)
+      if (net.on(v)) M.vflag[v] |= PORTAL;
+    find_bridges();
     return status;
+  }
+
+  // vertex ids of the search: the mesh's, then the network's extra vertices
+  int nids() const { return net.size(); }
+  double idx(int id) const { return id < M.nvert() ? M.vx[id] : net.ex[id - M.nvert()]; }
+  double idy(int id) const { return id < M.nvert() ? M.vy[id] : net.ey[id - M.nvert()]; }
+
+  // Where (x, y) lies on the network: the ends of its segment with their distances, or
+  // the one vertex it is; on a stub, the stub's ends that the point sees along it (S:
+  // Planner::blocked's scratch); empty when nowhere on it.
+  void locate_net(double x, double y, std::vector<std::pair<int, double>>& att,
+                  PlanScratch& S) const {
+    att.clear();
+    auto on_seg = [&](int a, int b) {
+      const double ax = idx(a), ay = idy(a), bx = idx(b), by = idy(b);
+      return !(x < std::min(ax, bx) || x > std::max(ax, bx) || y < std::min(ay, by) ||
+               y > std::max(ay, by)) &&
+             orient_d(ax, ay, bx, by, x, y) == 0;
+    };
+    for (std::size_t k = 0; k < net.ea.size(); ++k) {
+      const int a = net.ea[k], b = net.eb[k];
+      if (!on_seg(a, b)) continue;
+      if (x == idx(a) && y == idy(a)) return att.push_back({a, 0.0});
+      if (x == idx(b) && y == idy(b)) return att.push_back({b, 0.0});
+      att.push_back({a, dist(x, y, idx(a), idy(a))});
+      att.push_back({b, dist(x, y, idx(b), idy(b))});
+      return;
+    }
+    for (std::size_t k = 0; k < net.sa.size(); ++k) {
+      const int a = net.sa[k], b = net.sb[k];
+      if (!on_seg(a, b)) continue;
+      for (int e : {a, b}) {
+        const double ex = idx(e), ey = idy(e);
+        if (x == ex && y == ey) return att.assign(1, {e, 0.0});
+        if (!base.blocked(x, y, ex, ey, S)) att.push_back({e, dist(x, y, ex, ey)});
+      }
+      // a free point inside a stub's free part: its free ends, or none (isolated)
+      if (!att.empty()) return;
+    }
   }
 
   // is a target polygon on polygon x's side of the bridge with child c?
   bool target_side(const MeshScratch& MS, int x, int c) const {
     const bool xin = ptin[c] <= ptin[x] && ptin[x] < ptout[c];
-    for (int t : MS.tpolys)
+    for (int t : MS.ppolys)
       if ((ptin[c] <= ptin[t] && ptin[t] < ptout[c]) == xin) return true;
     return false;
   }
@@ -797,9 +788,25 @@ struct MeshPlanner {
       if (y < mb[1] || y > mb[3]) return 4;
     M.locate(sx, sy, MS.spolys);
     M.locate(gx, gy, MS.tpolys);
-    if (MS.spolys.empty() || MS.tpolys.empty()) return 3;  // an isolated free point
-    if ((int)MS.best.size() != M.nvert() || (int)MS.tmark.size() != M.npoly())
-      MS.init(M.nvert(), M.npoly());
+    MS.satt.clear();
+    MS.gatt.clear();
+    if (MS.spolys.empty()) locate_net(sx, sy, MS.satt, S);
+    if (MS.tpolys.empty()) locate_net(gx, gy, MS.gatt, S);
+    // an isolated free point (or on a part of the network that the mesh does not hold)
+    if ((MS.spolys.empty() && MS.satt.empty()) || (MS.tpolys.empty() && MS.gatt.empty()))
+      return 3;
+    if ((int)MS.best.size() != nids() || (int)MS.tmark.size() != M.npoly())
+      MS.init(nids(), M.npoly());
+    // the goal on the network is reached through its ends, or a portal of their network
+    MS.ppolys = MS.tpolys;
+    for (const auto& [w, d] : MS.gatt) {
+      (void)d;
+      const int c = w < (int)net.comp.size() ? net.comp[w] : -1;
+      for (int v = 0; v < M.nvert(); ++v)
+        if (v == w || (c >= 0 && (M.vflag[v] & PORTAL) && net.comp[v] == c))
+          MS.ppolys.insert(MS.ppolys.end(), M.vp.begin() + M.vpoff[v],
+                           M.vp.begin() + M.vpoff[v + 1]);
+    }
     for (int p : MS.tpolys) MS.tmark[p] = 1;
     int st = search(sx, sy, gx, gy, out, MS);
     for (int p : MS.tpolys) MS.tmark[p] = 0;
@@ -848,7 +855,8 @@ struct MeshPlanner {
       N.f = N.g + heuristic(N, roots[root], tx, ty);
       push(N);
     };
-    auto push_vertex = [&](int v, int parent, double g, int restr, int e1, const Lim& line) {
+    auto push_vertex = [&](int v, int parent, double g, int restr, int e1, const Lim& line,
+                           int on_net = 0) {
       if (!(g < MS.best[v])) return;
       if (MS.best[v] == std::numeric_limits<double>::infinity()) MS.touched.push_back(v);
       MS.best[v] = g;
@@ -857,11 +865,30 @@ struct MeshPlanner {
       N.v = v;
       N.root = parent;
       N.g = g;
-      N.f = g + dist(M.vx[v], M.vy[v], tx, ty);
+      N.f = g + dist(idx(v), idy(v), tx, ty);
       N.restr = restr;
       N.e1 = e1;
+      N.net = on_net || v >= M.nvert();
       N.R = line;
       push(N);
+    };
+    // along the zero-width segments from vertex v (the root `root`, reached with g): a
+    // mesh vertex reached this way expands its whole fan; the goal on the network ends
+    auto expand_net = [&](int root, int v, double g) {
+      for (const auto& [w, d] : MS.gatt)
+        if (w == v) push_final(root, g + d);
+      if (!net.on(v)) return;
+      for (int t = net.off[v]; t < net.off[v + 1]; ++t) {
+        const int w = net.adj[t];
+        push_vertex(w, root, g + dist(idx(v), idy(v), idx(w), idy(w)), 0, -1, Lim{});
+      }
+    };
+    // a mesh vertex the goal on the network is reached from (an end of its segment or
+    // stub that is no portal: it is one for this query)
+    auto goal_end = [&](int v) {
+      for (const auto& wd : MS.gatt)
+        if (wd.first == v) return true;
+      return false;
     };
     // a path from the root (rx, ry) may bend at vertex v: at a junction every way, at a
     // corner towards the obstacle there -- the side(s) of the line root-v that the
@@ -876,20 +903,32 @@ struct MeshPlanner {
         push_vertex(v, root, gv, 0, -1, Lim{});
         return;
       }
+      // a portal where no path bends in the mesh: on along its zero-width segments only
+      const bool portal = (M.vflag[v] & PORTAL) || goal_end(v);
+      if (!(M.vflag[v] & CORNER)) {
+        if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
+        return;
+      }
       const int p = M.vprev[v], q = M.vnext[v];
       const int sp = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[p], M.vy[p]);
       const int sq = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[q], M.vy[q]);
       const int restr = (sp >= 0 && sq >= 0) ? 1 : (sp <= 0 && sq <= 0) ? -1 : 0;
       // the line root-v runs into the obstacle: no shortest path bends here (every way
       // out of v turns away from the obstacle, and the root sees past v on both sides)
-      if (restr == 0) return;
+      if (restr == 0) {
+        if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
+        return;
+      }
       // the edge of the corner nearest the ray beyond v (a turn of less than 180 degrees
       // from it towards the obstacle): a shortest path bending at v leaves between that
       // ray and this edge
       const int turn = orient_d(M.vx[v], M.vy[v], M.vx[p], M.vy[p], M.vx[q], M.vy[q]);
       const int e1 = turn == 0 ? -1 : restr * turn > 0 ? p : q;
       // that edge runs on along the line root-v: the path goes straight on (no bend)
-      if (e1 >= 0 && orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[e1], M.vy[e1]) == 0) return;
+      if (e1 >= 0 && orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[e1], M.vy[e1]) == 0) {
+        if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
+        return;
+      }
       push_vertex(v, root, gv, restr, e1, Lim{rx, ry, M.vx[v], M.vy[v]});
     };
     // Is polygon Z (around the corner of vertex node V) wholly beyond the line through
@@ -922,7 +961,8 @@ struct MeshPlanner {
         const int off = M.poff[Z], m = M.poff[Z + 1] - off;
         for (int i = 0; i < m; ++i) {  // the polygon's corners and junctions: in sight
           const int u = M.pv[off + i];
-          if (M.vflag[u] && u != roots[root].v && !(M.vx[u] == rx && M.vy[u] == ry))
+          if ((M.vflag[u] || goal_end(u)) && u != roots[root].v &&
+              !(M.vx[u] == rx && M.vy[u] == ry))
             bend(u, root, rx, ry, g, V);
         }
         for (int i = 0; i < m; ++i) {
@@ -961,12 +1001,19 @@ struct MeshPlanner {
         for (int i = M.poff[p]; i < M.poff[p + 1]; ++i)
           if (M.vx[M.pv[i]] == sx && M.vy[M.pv[i]] == sy) sv = M.pv[i];
       }
+      // the start on the network: one of its vertices, or inside a segment
+      const bool at_vertex = MS.satt.size() == 1 && idx(MS.satt[0].first) == sx &&
+                             idy(MS.satt[0].first) == sy;
+      if (at_vertex) sv = MS.satt[0].first;
       roots.push_back(Root{sx, sy, 0.0, -1, sv});
       if (sv >= 0) {
         MS.best[sv] = 0.0;
         MS.touched.push_back(sv);
       }
       expand_point(0, MS.spolys, nullptr);
+      if (sv >= 0) expand_net(0, sv, 0.0);
+      if (!at_vertex)
+        for (const auto& [w, d] : MS.satt) push_vertex(w, 0, d, 0, -1, Lim{});
     }
     while (!heap.empty()) {
       const int id = heap.front().second;
@@ -980,17 +1027,22 @@ struct MeshPlanner {
           out.push_back(roots[chain[t]].x);
           out.push_back(roots[chain[t]].y);
         }
-        out.push_back(tx);
-        out.push_back(ty);
+        if (!(out[out.size() - 2] == tx && out.back() == ty)) {  // the goal is the last root
+          out.push_back(tx);
+          out.push_back(ty);
+        }
         return 0;
       }
       ++n_expanded;
       if (N.kind == 1) {
         if (N.g > MS.best[N.v]) continue;
-        roots.push_back(Root{M.vx[N.v], M.vy[N.v], N.g, N.root, N.v});
+        roots.push_back(Root{idx(N.v), idy(N.v), N.g, N.root, N.v});
         const int root = (int)roots.size() - 1;
-        fan.assign(M.vp.begin() + M.vpoff[N.v], M.vp.begin() + M.vpoff[N.v + 1]);
-        expand_point(root, fan, &N);
+        if (!N.net) {
+          fan.assign(M.vp.begin() + M.vpoff[N.v], M.vp.begin() + M.vpoff[N.v + 1]);
+          expand_point(root, fan, &N);
+        }
+        expand_net(root, N.v, N.g);
         continue;
       }
       const Root& r = roots[N.root];
@@ -1028,7 +1080,8 @@ struct MeshPlanner {
       }
       // bends: corners at the ends of the interval's edge, junctions in the cone
       for (int j = 0; j < m; ++j)
-        if (M.vflag[c[j]] && L[j] <= 0 && R[j] >= 0) bend(c[j], rid, rx, ry, g, nullptr);
+        if ((M.vflag[c[j]] || goal_end(c[j])) && L[j] <= 0 && R[j] >= 0)
+          bend(c[j], rid, rx, ry, g, nullptr);
     }
     return 3;
   }

@@ -162,5 +162,4 @@ OFFSET_DETOUR: int = _ext.OFFSET_DETOUR
 #: The navigation mesh's build codes (navmesh.hpp).
 MESH_OK: int = _ext.MESH_OK
 MESH_INEXACT: int = _ext.MESH_INEXACT
-MESH_ZERO_WIDTH: int = _ext.MESH_ZERO_WIDTH
 MESH_FAILED: int = _ext.MESH_FAILED

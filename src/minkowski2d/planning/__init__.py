@@ -10,12 +10,14 @@ the gaps beside it open. The seams between the convex pieces of one obstacle are
 passages.
 
 The compiled core (:mod:`minkowski2d._core`, ``planning.hpp``) builds a reduced
-visibility graph directly on the overlapping convex pieces (no union, no mesh: both
-would close zero-width passages): bend points are piece vertices outside every
+visibility graph directly on the overlapping convex pieces (no union: it would close
+zero-width passages): bend points are piece vertices outside every
 C-obstacle's open interior, edges are the mutually visible pairs whose segment is tangent
 at both ends, and every visibility and containment decision is an exact sign. Queries
-connect the start and the goal by the same exact visibility and run A*. See
-``docs/planning.md``.
+connect the start and the goal by the same exact visibility and run A*. Scenes of 64
+or more pieces are planned on an exact navigation mesh (``navmesh.hpp``: convex cells
+and Polyanya's interval search; zero-width passages as a network of segments beside the
+cells). See ``docs/planning.md``.
 
 Examples
 --------

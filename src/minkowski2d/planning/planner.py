@@ -446,8 +446,6 @@ class MotionPlanner(_Queries):
             why = {
                 core.MESH_INEXACT: "a crossing of two C-obstacle edges on the free space's "
                 "boundary is not a float64 value",
-                core.MESH_ZERO_WIDTH: "the free space has zero-width passages (obstacles, or "
-                "an obstacle and the workspace box, touching along an edge)",
             }.get(st, "the mesh could not be built")
         if self.method == "mesh":
             raise OptionError(
