@@ -583,6 +583,31 @@ def test_zero_width_network_bends_branches_and_meets_the_box():
     assert p.points.tolist()[1:3] == [[0, 4], [0, 5]] or len(p.points) > 2
 
 
+def test_touching_rectangles_at_scale_equal_the_visibility_graph():
+    # 400 rectangles, one per cell of a 20 x 20 grid, each side on the cell border with
+    # probability 0.3: dozens of passages between neighbours and along the box
+    rng = np.random.default_rng(5)
+    obs = []
+    for i in range(20):
+        for j in range(20):
+            ins = np.where(rng.random(4) < 0.3, 0, rng.integers(5, 30, 4))
+            obs.append(sq(100 * i + ins[0], 100 * j + ins[1],
+                          100 * (i + 1) - ins[2], 100 * (j + 1) - ins[3]))  # fmt: skip
+    ws = (0, 0, 2000, 2000)
+    mesh = mk.MotionPlanner(obs, workspace=ws, method="mesh")
+    assert len(mesh._core.zero_width()) > 50
+    vis = mk.MotionPlanner(obs, workspace=ws, method="visibility")
+    segs = mesh._core.zero_width()
+    # queries in the open, and on the passages (inside segments and at their ends)
+    free = [tuple(map(int, p)) for p in rng.integers(0, 2001, (200, 2))]
+    free = [p for p in free if mesh.is_free([p]).all()][:60]
+    on = [((a + c) / 2, (b + d) / 2) for a, b, c, d in segs[::7].tolist()]
+    on += [(a, b) for a, b, _, _ in segs[3::11].tolist()]
+    pts = free + on
+    pairs = list(zip(pts, pts[::-1]))[: len(pts) // 2] + list(zip(on, free))
+    same_as_visibility(mesh, vis, pairs)
+
+
 def test_bridge_pruning_keeps_lengths_and_prunes():
     # no interval across a bridge of the mesh into a side without the target: the same
     # lengths as the search without it, and far fewer nodes
