@@ -126,13 +126,25 @@ def check_upper(out_geom, in_geom, r_up):
 
     M = np.maximum(ps(a), ps(b))
     order = np.argsort(M, axis=1)[:, :4]
+    FT = [(_F(t[0]), _F(t[1])) for t in T]
+
+    def near_one(p, q, js):
+        return any(_pt_seg2(p, *FT[j]) <= R2 and _pt_seg2(q, *FT[j]) <= R2 for j in js)
+
+    def near(p, q, depth):
+        # within r_up of the union of the edges: of one edge, or each half (exact
+        # midpoints) of one edge -- a segment along two nearly collinear edges has its
+        # ends near different ones
+        if near_one(p, q, range(len(FT))):
+            return True
+        if depth == 0:
+            return False
+        m = ((p[0] + q[0]) / 2, (p[1] + q[1]) / 2)
+        return near(p, m, depth - 1) and near(m, q, depth - 1)
+
     for i in range(len(S)):
         p, q = _F(S[i, 0]), _F(S[i, 1])
-        ok = any(
-            _pt_seg2(p, _F(T[j, 0]), _F(T[j, 1])) <= R2
-            and _pt_seg2(q, _F(T[j, 0]), _F(T[j, 1])) <= R2
-            for j in order[i]
-        )
+        ok = near_one(p, q, order[i]) or near(p, q, 10)
         assert ok, (S[i], math.sqrt(M[i].min()), r_up)
 
 
