@@ -60,6 +60,32 @@ def test_the_engine_imports_no_public_module():
     assert not bad, bad
 
 
+STATUS_NAMES = {"st", "status", "code"}
+
+
+def test_no_status_code_is_an_integer_literal():
+    # a core status is compared with its name (core.Status.OK, core.PLAN_NO_PATH, ...),
+    # never with a number typed by hand
+    bad = []
+    for name, p in _modules():
+        for node in ast.walk(ast.parse(p.read_text())):
+            if not isinstance(node, ast.Compare):
+                continue
+            sides = [node.left, *node.comparators]
+            names = [s.value if isinstance(s, ast.Subscript) else s for s in sides]
+            if not any(isinstance(n, ast.Name) and n.id in STATUS_NAMES for n in names):
+                continue
+            lits = [
+                s
+                for s in sides
+                if (isinstance(s, ast.Constant) and type(s.value) is int)
+                or (isinstance(s, ast.UnaryOp) and isinstance(s.operand, ast.Constant))
+            ]
+            if lits:
+                bad.append(f"{name}:{node.lineno}")
+    assert not bad, bad
+
+
 def test_modules_and_functions_are_small():
     big = []
     for name, p in _modules():

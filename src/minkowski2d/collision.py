@@ -134,7 +134,7 @@ def _kernel_view(data: np.ndarray) -> np.ndarray:
 
 
 def _raise(code: int, name: str, vertex: int) -> None:
-    if code == -1:  # pragma: no cover - a guard against a bug, never reached in tests
+    if code == core.Status.INTERNAL:  # pragma: no cover - a guard against a bug
         raise RuntimeError("GJK did not terminate; please report this input")
     raise D.status_error(code, vertex, name)
 
@@ -153,7 +153,7 @@ def _pair(a: Any, b: Any, mode: int, hull: bool) -> tuple[bool, np.ndarray]:
         code, which, v, hit = core.coll_single(
             _kernel_view(da), _kernel_view(db), mode, ka == INT, kb == INT, row
         )
-        if code == 0:
+        if code == core.Status.OK:
             return bool(hit), row[0]
         if code != _OUT_OF_RANGE:
             _raise(int(code), ("a", "b")[which], int(v))
@@ -342,7 +342,7 @@ def contains(poly: ArrayLike2, points: Any, *, hull: bool = False) -> Any:
         code, which, v = core.coll_contains(
             _kernel_view(dp), kp == INT, _kernel_view(dq), kq == INT, out
         )
-        if code == 0:
+        if code == core.Status.OK:
             return bool(out[0]) if one else out
         if code != _OUT_OF_RANGE:
             _raise(int(code), ("poly", "points")[which], int(v))
@@ -394,7 +394,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
     qb = np.arange(P, dtype=np.int64) if many_b else np.zeros(P, np.int64)
     r = core.coll_pairs(*prepared[0], *prepared[1], qa, qb, mode, hit, res, threads)
     if r >= 0:  # pragma: no cover - guard
-        _raise(-1, "", 0)
+        _raise(core.Status.INTERNAL, "", 0)
     return hit.astype(bool), res
 
 

@@ -249,7 +249,7 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
     ):
         # the tiny path: Python pairs straight into the core, validated as they are read
         out, code, which, v, _ = core.sum_lists(a, b)
-        if code == 0:
+        if code == core.Status.OK:
             return out
         if code != _UNHANDLED:
             raise D.status_error(code, v, _NAMES[which], (a, b, None)[which])

@@ -104,7 +104,7 @@ nb::tuple single_b(In2<double> pa, In2<double> pb, int mode, bool int_a, bool in
         std::int8_t h = 0;
         i64 g = mk::coll::pairs(A, B, &q0, &q0, 1, mode, &h, res.data(), 1);
         if (g >= 0)
-          code = -1;
+          code = mk::INTERNAL;  // GJK did not terminate
         else
           hit = h;
       }

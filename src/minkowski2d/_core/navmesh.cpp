@@ -50,8 +50,7 @@ void bind_mesh_planner(nb::module_& m) {
           },
           "coords"_a.noconvert(), "offsets"_a.noconvert(), "groups"_a.noconvert(),
           "box"_a.noconvert(), "open_box"_a, "meshbox"_a.noconvert())
-      // (status, group, path (k, 2)); status 0 ok, 1 start bad, 2 goal bad, 3 no path,
-      // 4 outside the meshed box
+      // (status, group, path (k, 2)); status: a PlanStatus (PLAN_OK, ..., PLAN_OUTSIDE_MESH)
       .def("query",
            [](const MP& self, double sx, double sy, double gx, double gy) {
              std::vector<double> out;

@@ -755,37 +755,15 @@ struct MeshPlanner {
                     dist(r.x, r.y, rx, ry) + dist(rx, ry, px, py));
   }
 
-  // status: 0 ok (path in out), 1 start bad, 2 goal bad, 3 no path, 4 outside the meshed
-  // box (the caller meshes a larger one)
+  // a PlanStatus (planning.hpp; PLAN_OUTSIDE_MESH: the caller meshes a larger box)
   int query(double sx, double sy, double gx, double gy, std::vector<double>& out, int& grp,
             PlanScratch& S, MeshScratch& MS) const {
-    out.clear();
-    grp = -1;
     n_expanded = n_pushed = 0;
-    for (int w = 0; w < 2; ++w) {
-      double x = w ? gx : sx, y = w ? gy : sy;
-      if (!base.in_box(x, y)) {
-        grp = -2;
-        return 1 + w;
-      }
-      int gg = base.interior_group(x, y, S);
-      if (gg >= 0) {
-        grp = gg;
-        return 1 + w;
-      }
-    }
-    if (sx == gx && sy == gy) {
-      out = {sx, sy};
-      return 0;
-    }
-    if (!base.blocked(sx, sy, gx, gy, S)) {
-      out = {sx, sy, gx, gy};
-      return 0;
-    }
+    if (int st = base.query_front(sx, sy, gx, gy, out, grp, S); st >= 0) return st;
     for (double x : {sx, gx})
-      if (x < mb[0] || x > mb[2]) return 4;
+      if (x < mb[0] || x > mb[2]) return PLAN_OUTSIDE_MESH;
     for (double y : {sy, gy})
-      if (y < mb[1] || y > mb[3]) return 4;
+      if (y < mb[1] || y > mb[3]) return PLAN_OUTSIDE_MESH;
     M.locate(sx, sy, MS.spolys);
     M.locate(gx, gy, MS.tpolys);
     MS.satt.clear();
@@ -794,7 +772,7 @@ struct MeshPlanner {
     if (MS.tpolys.empty()) locate_net(gx, gy, MS.gatt, S);
     // an isolated free point (or on a part of the network that the mesh does not hold)
     if ((MS.spolys.empty() && MS.satt.empty()) || (MS.tpolys.empty() && MS.gatt.empty()))
-      return 3;
+      return PLAN_NO_PATH;
     if ((int)MS.best.size() != nids() || (int)MS.tmark.size() != M.npoly())
       MS.init(nids(), M.npoly());
     // the goal on the network is reached through its ends, or a portal of their network
@@ -1031,7 +1009,7 @@ struct MeshPlanner {
           out.push_back(tx);
           out.push_back(ty);
         }
-        return 0;
+        return PLAN_OK;
       }
       ++n_expanded;
       if (N.kind == 1) {
@@ -1083,7 +1061,7 @@ struct MeshPlanner {
         if ((M.vflag[c[j]] || goal_end(c[j])) && L[j] <= 0 && R[j] >= 0)
           bend(c[j], rid, rx, ry, g, nullptr);
     }
-    return 3;
+    return PLAN_NO_PATH;
   }
 };
 

@@ -49,7 +49,7 @@ void bind_planner(nb::module_& m, const char* name) {
           },
           "coords"_a.noconvert(), "offsets"_a.noconvert(), "groups"_a.noconvert(),
           "box"_a.noconvert(), "threads"_a = 1, "open_box"_a = false)
-      // (status, group, path (k, 2)); status 0 ok, 1 start bad, 2 goal bad, 3 no path
+      // (status, group, path (k, 2)); status: a PlanStatus (PLAN_OK, ...)
       .def("query",
            [](const PL& self, T sx, T sy, T gx, T gy) {
              std::vector<T> out;
@@ -130,6 +130,11 @@ void bind_planner(nb::module_& m, const char* name) {
 void bind_planning(nb::module_& m) {
   bind_planner<i64>(m, "PlannerI");
   bind_planner<double>(m, "PlannerF");
+  m.attr("PLAN_OK") = (int)mk::PLAN_OK;
+  m.attr("PLAN_START_BAD") = (int)mk::PLAN_START_BAD;
+  m.attr("PLAN_GOAL_BAD") = (int)mk::PLAN_GOAL_BAD;
+  m.attr("PLAN_NO_PATH") = (int)mk::PLAN_NO_PATH;
+  m.attr("PLAN_OUTSIDE_MESH") = (int)mk::PLAN_OUTSIDE_MESH;
 }
 
 }  // namespace mk_bind

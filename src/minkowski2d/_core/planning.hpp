@@ -41,6 +41,16 @@ inline int orient3(T ax, T ay, T bx, T by, T cx, T cy) {  // sign of (b - a) x (
   return cross_sign(ax, ay, bx, by, ax, ay, cx, cy);
 }
 
+// The status of a query, for both planners (this one and navmesh.hpp's); exported to
+// Python by the bindings.
+enum PlanStatus : int {
+  PLAN_OK = 0,            // the path is in out
+  PLAN_START_BAD = 1,     // the start is outside the box or inside a group (grp says)
+  PLAN_GOAL_BAD = 2,      // the goal likewise
+  PLAN_NO_PATH = 3,       // the goal cannot be reached
+  PLAN_OUTSIDE_MESH = 4,  // (navmesh) a point outside the meshed box: mesh a larger one
+};
+
 // Per-thread scratch: stamps deduplicate items met in several grid cells.
 struct PlanScratch {
   std::vector<std::uint32_t> stamp;
@@ -774,31 +784,39 @@ struct Planner {
   }
 
   // ------------------------------------------------------------------ queries
-  // status: 0 ok (path in out), 1 start bad, 2 goal bad, 3 no path; grp: the group (or
-  // -2 outside the box)
-  int query(T sx, T sy, T gx, T gy, std::vector<T>& out, int& grp, PlanScratch& S) const {
+  // What every query (of both planners) begins with: the start and the goal valid, the
+  // same point, the straight segment free. A PlanStatus, or -1 when a search must answer;
+  // grp: the group a point is inside (-2: outside the box).
+  int query_front(T sx, T sy, T gx, T gy, std::vector<T>& out, int& grp,
+                  PlanScratch& S) const {
     out.clear();
     grp = -1;
     for (int w = 0; w < 2; ++w) {
       T x = w ? gx : sx, y = w ? gy : sy;
       if (!in_box(x, y)) {
         grp = -2;
-        return 1 + w;
+        return w ? PLAN_GOAL_BAD : PLAN_START_BAD;
       }
       int g = interior_group(x, y, S);
       if (g >= 0) {
         grp = g;
-        return 1 + w;
+        return w ? PLAN_GOAL_BAD : PLAN_START_BAD;
       }
     }
     if (sx == gx && sy == gy) {
       out = {sx, sy};
-      return 0;
+      return PLAN_OK;
     }
     if (!blocked(sx, sy, gx, gy, S)) {
       out = {sx, sy, gx, gy};
-      return 0;
+      return PLAN_OK;
     }
+    return -1;
+  }
+
+  // a PlanStatus (the path in out); grp as in query_front
+  int query(T sx, T sy, T gx, T gy, std::vector<T>& out, int& grp, PlanScratch& S) const {
+    if (int st = query_front(sx, sy, gx, gy, out, grp, S); st >= 0) return st;
     const i64 N = ncand();
     // query points may be larger than the scene: the query's own scale, and the factor
     // (a power of two) that brings the graph's edge lengths to it
@@ -812,7 +830,7 @@ struct Planner {
       if (tangent(sx, sy, v) && !blocked(sx, sy, vx, vy, S))
         se.emplace_back((int)v, dist(sx, sy, vx, vy, qs));
     }
-    if (se.empty()) return 3;
+    if (se.empty()) return PLAN_NO_PATH;
     std::vector<char> sc;
     {
       int mc = 0;
@@ -826,7 +844,7 @@ struct Planner {
       if (tangent(gx, gy, v) && !blocked(gx, gy, vx, vy, S))
         ge.emplace_back((int)v, dist(gx, gy, vx, vy, qs));
     }
-    if (ge.empty()) return 3;
+    if (ge.empty()) return PLAN_NO_PATH;
     // A*: nodes 0..N-1, N start, N + 1 goal
     const double INF = std::numeric_limits<double>::infinity();
     std::vector<double> g(N + 2, INF), togoal(N, INF);
@@ -862,7 +880,7 @@ struct Planner {
       for (i64 e = aoff[a]; e < aoff[a + 1]; ++e) relax(adj[e], aw[e] * wf);
       if (togoal[a] < INF) relax((int)N + 1, togoal[a]);
     }
-    if (!done[N + 1]) return 3;
+    if (!done[N + 1]) return PLAN_NO_PATH;
     std::vector<int> nodes;
     for (int a = (int)N + 1; a >= 0; a = parent[a]) nodes.push_back(a);
     std::reverse(nodes.begin(), nodes.end());
@@ -878,7 +896,7 @@ struct Planner {
         out.push_back(cv[2 * a + 1]);
       }
     }
-    return 0;
+    return PLAN_OK;
   }
 };
 

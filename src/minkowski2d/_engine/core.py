@@ -161,5 +161,10 @@ OFFSET_OVERFLOWS: int = _ext.OFFSET_OVERFLOWS
 OFFSET_DETOUR: int = _ext.OFFSET_DETOUR
 #: The navigation mesh's build codes (navmesh.hpp).
 MESH_OK: int = _ext.MESH_OK
+PLAN_OK: int = _ext.PLAN_OK
+PLAN_START_BAD: int = _ext.PLAN_START_BAD
+PLAN_GOAL_BAD: int = _ext.PLAN_GOAL_BAD
+PLAN_NO_PATH: int = _ext.PLAN_NO_PATH
+PLAN_OUTSIDE_MESH: int = _ext.PLAN_OUTSIDE_MESH
 MESH_INEXACT: int = _ext.MESH_INEXACT
 MESH_FAILED: int = _ext.MESH_FAILED

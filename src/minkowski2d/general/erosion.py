@@ -346,6 +346,6 @@ def _erode_general(A: _Operand, B: _Operand) -> Any:
         limits.MAX_CROSSINGS,
         1,
     )
-    if status[0] != 0:
+    if status[0] != core.Status.OK:
         raise _status_error(int(status[0]), A.name, B.name, "convolution")
     return geometries(xy, ro, po, pair_off)[0]

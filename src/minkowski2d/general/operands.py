@@ -256,7 +256,7 @@ def _build(raw: _Raw) -> _Operand:
         from .._engine.polygon import Invalid, probe
 
         status, reason, _, _, orientation, disconnected = probe(rings)
-        if status == 0 and not disconnected.any():
+        if status == core.Status.OK and not disconnected.any():
             return _Operand(rings, orientation, None, name)
         if status and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
             # a point, a segment, or collinear points: a degenerate convex set

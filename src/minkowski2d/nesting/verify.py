@@ -56,6 +56,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from .._engine import core
 from .._engine.polygon import probe, rings_of
 from ..errors import GeometryError, OverflowGeometryError
 from .nfp import rotate_part
@@ -189,7 +190,7 @@ def _oriented_rings(poly: Any) -> list[np.ndarray]:
             c = c[(c != np.roll(c, 1, axis=0)).any(axis=1)]
         if len(c) < 3:
             continue
-        o = int(orientation[r]) if status == 0 else _shoelace_sign(c)
+        o = int(orientation[r]) if status == core.Status.OK else _shoelace_sign(c)
         if o == 0:
             continue
         if (o > 0) != bool(shell[r]):

@@ -191,12 +191,13 @@ def _read(obj: Any, name: str) -> _Input:
         raise NonFiniteError(
             f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
         )
+    from .._engine import core
     from .._engine.polygon import Invalid, probe, rings_of_array
 
     rings = rings_of_array(data)
     if len(data) >= 3:
         status, reason = probe(rings)[:2]
-        if status == 0:
+        if status == core.Status.OK:
             return _one_ring(data, delta)  # the common case: a valid ring (exact check)
         if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
             _validated(*rings, name, False)  # raises the core's verdict

@@ -6,6 +6,7 @@ from typing import Any
 
 import numpy as np
 
+from .._engine import core
 from .._engine.coerce import is_shapely
 from ..errors import (
     GeometryError,
@@ -147,11 +148,11 @@ class _Queries:
         pl, out = self._route([s, g])
         st, grp, pts, _ = pl._query(np.array([s], dtype=object), np.array([g], dtype=object), out)
         st, grp, pts = int(st[0]), int(grp[0]), pts
-        if st == 1:
+        if st == core.PLAN_START_BAD:
             raise self._point_error("start", s, grp)
-        if st == 2:
+        if st == core.PLAN_GOAL_BAD:
             raise self._point_error("goal", g, grp)
-        if st == 3:
+        if st == core.PLAN_NO_PATH:
             raise NoPathError(
                 f"goal: ({_fmt(g[0])}, {_fmt(g[1])}) cannot be reached from "
                 f"({_fmt(s[0])}, {_fmt(s[1])})",
@@ -179,7 +180,7 @@ class _Queries:
             res: tuple = ([st], [grp], pts, [0, len(pts)])
         else:
             res = self._core.query_many(A, B)
-        if any(int(v) == 4 for v in res[0]):  # outside the meshed box
+        if any(int(v) == core.PLAN_OUTSIDE_MESH for v in res[0]):
             self._core = self._make_mesh("float", cover=np.concatenate([A, B]))
             if self._core is None:
                 self._core = self._make_graph(self.kind)
@@ -229,11 +230,11 @@ class _Queries:
         st, grp, pts, off = pl._query(S, G, out)
         res: list[Path | None] = []
         for i in range(len(S)):
-            if st[i] == 1:
+            if st[i] == core.PLAN_START_BAD:
                 raise self._point_error(f"starts[{i}]", S[i], int(grp[i]))
-            if st[i] == 2:
+            if st[i] == core.PLAN_GOAL_BAD:
                 raise self._point_error(f"goals[{i}]", G[i], int(grp[i]))
-            res.append(None if st[i] == 3 else Path(pts[off[i] : off[i + 1]]))
+            res.append(None if st[i] == core.PLAN_NO_PATH else Path(pts[off[i] : off[i + 1]]))
         return res
 
     @staticmethod
