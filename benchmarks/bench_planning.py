@@ -373,7 +373,7 @@ def main() -> None:
     ap.add_argument("--caves", type=int, nargs="*", default=[256], help="cave sizes")
     ap.add_argument("--ks", type=int, nargs="*", default=[100, 1000, 10000], help="random K")
     ap.add_argument("--checker", type=int, nargs="*", default=[50], help="checkerboard K")
-    ap.add_argument("--touching", type=int, nargs="*", default=[10000], help="touching K")
+    ap.add_argument("--touching", type=int, nargs="*", default=[1000, 10000], help="touching K")
     ap.add_argument("--queries", type=int, default=100)
     ap.add_argument("--peer-max-k", type=int, default=100, help="peers on random K up to this")
     ap.add_argument("--peer-max-maze", type=int, default=20, help="extremitypathfinder mazes")
