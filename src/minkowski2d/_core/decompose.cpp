@@ -91,8 +91,6 @@ void bind_decompose(nb::module_& m) {
         "ids"_a.noconvert());
   m.def("hertel_mehlhorn_f", &hertel_mehlhorn<double>, "verts"_a.noconvert(),
         "ids"_a.noconvert(), "twin"_a.noconvert(), "merge"_a);
-  m.def("hertel_mehlhorn_i", &hertel_mehlhorn<i64>, "verts"_a.noconvert(), "ids"_a.noconvert(),
-        "twin"_a.noconvert(), "merge"_a);
 }
 
 }  // namespace mk_bind

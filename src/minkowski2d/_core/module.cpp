@@ -498,16 +498,6 @@ Out<std::int8_t> orient_many(In2<T> P, In2<T> Q, In2<T> R) {
   return owned(out, (std::size_t)n, 0);
 }
 
-// One pass over a float64 array: (code, row): 0 finite, NONFINITE at row.
-inline nb::tuple check_finite(In2<double> P) {
-  const double* p = P.data();
-  i64 n = (i64)P.shape(0);
-  for (i64 i = 0; i < n; ++i)
-    if (!(p[2 * i] - p[2 * i] == 0.0 && p[2 * i + 1] - p[2 * i + 1] == 0.0))
-      return nb::make_tuple((int)mk::NONFINITE, i);
-  return nb::make_tuple((int)mk::OK, (i64)0);
-}
-
 void bind_collision(nb::module_& m);  // collision.cpp
 void bind_decompose(nb::module_& m);  // decompose.cpp
 void bind_planning(nb::module_& m);   // planning.cpp
@@ -560,7 +550,6 @@ NB_MODULE(_ext, m) {
   m.def("flatten", &flatten);
   m.def("orient_f", &orient_many<double>, "p"_a.noconvert(), "q"_a.noconvert(), "r"_a.noconvert());
   m.def("orient_i", &orient_many<i64>, "p"_a.noconvert(), "q"_a.noconvert(), "r"_a.noconvert());
-  m.def("check_finite", &check_finite, "p"_a.noconvert());
   m.def("cross_sign_f",
         [](double a0x, double a0y, double a1x, double a1y, double b0x, double b0y, double b1x,
            double b1y) { return mk::cross_sign(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y); });

@@ -80,22 +80,6 @@ nb::tuple overlay_rings(In2<double> H, In2<double> L, In1<i64> RO, In1<i64> W, I
                         nb::make_tuple(o.n_pairs, o.n_crossings, o.n_vertices, o.n_edges));
 }
 
-// union_rings(hi, lo, ring_off, leaf) -> (xy, ring_off, poly_off, status, (crossings,
-// runs)): the cascaded union of the rings (each counter-clockwise, weight 1).
-nb::tuple union_rings(In2<double> H, In2<double> L, In1<i64> RO, i64 leaf) {
-  check_rings(H, L, RO);
-  mk::ov::Geo g;
-  mk::ov::Cascade c(g, leaf);
-  mk::ov::Rings out;
-  {
-    nb::gil_scoped_release nogil;
-    auto parts = read_rings(g, H, L, RO, nullptr, nullptr);
-    c.unite(parts, out);
-  }
-  nb::tuple res = rings_result(out);
-  return nb::make_tuple(res[0], res[1], res[2], res[3], nb::make_tuple(c.n_crossings, c.n_runs));
-}
-
 void check_ragged(In2<double> XY, In1<i64> RO, In1<i64> PO) {
   const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, np = (i64)PO.shape(0) - 1;
   if (XY.shape(1) != 2) throw nb::value_error("sum: coordinates must have shape (n, 2)");
@@ -133,37 +117,14 @@ nb::tuple sum_convolution(In2<double> AX, In1<i64> ARO, In1<i64> APO, In2<double
   return nb::make_tuple(res[0], res[1], res[2], res[3], nb::make_tuple(nseg, o.n_crossings));
 }
 
-// sum_pieces(pieces of A (coords, offsets), pieces of B, leaf) -> (xy, ring_off,
-// poly_off, status, (crossings, runs)): the cascaded union of all piece sums.
-nb::tuple sum_pieces(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64> OB, i64 leaf) {
-  mk::ov::Geo g;
-  mk::ov::Cascade c(g, leaf);
-  mk::ov::Rings out;
-  int code;
-  {
-    nb::gil_scoped_release nogil;
-    std::vector<std::vector<mk::ov::EdgeIn>> parts;
-    code = mk::ms::piece_sums(g, PA.data(), OA.data(), (i64)OA.shape(0) - 1, PB.data(),
-                              OB.data(), (i64)OB.shape(0) - 1, parts);
-    if (code == mk::OK) c.unite(parts, out);
-  }
-  if (code != mk::OK) out.status = code;
-  nb::tuple res = rings_result(out);
-  return nb::make_tuple(res[0], res[1], res[2], res[3], nb::make_tuple(c.n_crossings, c.n_runs));
-}
-
 }  // namespace
 
 void bind_overlay(nb::module_& m) {
   m.def("overlay_rings", &overlay_rings, "hi"_a.noconvert(), "lo"_a.noconvert(),
         "ring_off"_a.noconvert(), "weight"_a.noconvert(), "layer"_a.noconvert(), "rule"_a);
-  m.def("union_rings", &union_rings, "hi"_a.noconvert(), "lo"_a.noconvert(),
-        "ring_off"_a.noconvert(), "leaf"_a = 4);
   m.def("sum_convolution", &sum_convolution, "a"_a.noconvert(), "a_ring_off"_a.noconvert(),
         "a_poly_off"_a.noconvert(), "b"_a.noconvert(), "b_ring_off"_a.noconvert(),
         "b_poly_off"_a.noconvert());
-  m.def("sum_pieces", &sum_pieces, "pa"_a.noconvert(), "oa"_a.noconvert(), "pb"_a.noconvert(),
-        "ob"_a.noconvert(), "leaf"_a = 4);
   m.attr("OVERLAY_UNION") = (int)mk::ov::UNION;
   m.attr("OVERLAY_DIFFERENCE") = (int)mk::ov::DIFFERENCE;
   m.attr("OVERLAY_INTERSECTION") = (int)mk::ov::INTERSECTION;
