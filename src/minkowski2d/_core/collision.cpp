@@ -1,7 +1,6 @@
 // collision.cpp -- bindings of collision.hpp: intersects / distance / penetration walks,
 // exact GJK, contains, the batch over pairs (with threads). Outputs are numpy arrays the
-// caller preallocates (as the former numba kernels took them); every kernel runs with
-// the GIL released.
+// caller preallocates; every kernel runs with the GIL released.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/tuple.h>

@@ -1,5 +1,5 @@
 // collision.hpp -- collision, distance, penetration and point location for convex
-// polygons (the port of the former numba kernels, step for step).
+// polygons.
 //
 // Coordinates are float64 (int input is passed as float64 when |x| < 2^53). Every
 // decision is an exact sign:
@@ -200,7 +200,7 @@ inline PrepResult prep_range(const double* p, const i64* off, i64 q0, i64 q1, in
 // Normalize polygon q = p[off[q]:off[q+1]] for every q: its normalized vertex indices to
 // idx[off[q]:off[q]+kk[q]], its split to ss[q] and, for PENETRATION, the inverse length
 // of its normalized edge t to inv[off[q] + t]. Returns (code, polygon, vertex) of the
-// first polygon out of range (all are checked first, as the numba kernel did) or else
+// first polygon out of range (all are checked first) or else
 // the first that fails to normalize. `threads` contiguous chunks of polygons run in
 // parallel; the result does not depend on it.
 inline PrepResult prep(const double* p, i64 np_, const i64* off, i64 P, bool is_int, int mode,

@@ -1,7 +1,7 @@
 // decompose.hpp -- Hertel-Mehlhorn convex decomposition of a triangulated polygon.
 //
-// A port, step for step, of the numba kernels that lived in minkowski2d/_decompose.py
-// (_turn, _convex_at, _find, _orient_triangles, _hertel_mehlhorn). Vertices are an (n, 2)
+// Called by minkowski2d._engine.decompose (turn, convex_at, find, orient_triangles,
+// hertel_mehlhorn). Vertices are an (n, 2)
 // row-major array of T (finite double, or int64 with |x| < 2^62); triangles are (T, 3)
 // int64 vertex ids. Every turn -- and the one dot-product sign -- goes through
 // mk::cross_sign, exact at every magnitude (subnormals to DBL_MAX): no range check, no
@@ -25,8 +25,8 @@ inline bool convex_at(const T* p, i64 i, i64 j, i64 k) {
   if (s < 0) return false;
   // collinear: straight on (not a spike folding back), i.e. (j - i) . (k - j) > 0. The dot
   // product is the cross product of (j - i) turned clockwise, (dy, -dx), with (k - j);
-  // negation is exact, so the sign is exact at every magnitude (the numba kernel's float
-  // dot product underflowed to 0 -- "folds back" -- for tiny coordinates).
+  // negation is exact, so the sign is exact at every magnitude (a float dot product
+  // underflows to 0 -- "folds back" -- for tiny coordinates).
   return cross_sign(p[2 * i + 1], -p[2 * i], p[2 * j + 1], -p[2 * j], p[2 * j], p[2 * j + 1],
                     p[2 * k], p[2 * k + 1]) > 0;
 }

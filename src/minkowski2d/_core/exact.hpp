@@ -31,7 +31,7 @@ using u64 = std::uint64_t;
 using i128 = __int128;
 using u128 = unsigned __int128;
 
-// Status codes shared with Python (minkowski2d._dispatch.Status mirrors these by name).
+// Status codes shared with Python (minkowski2d._engine.core.Status mirrors these by name).
 enum Status : int {
   OK = 0,
   TURNS_BOTH_WAYS = 1,  // a convex routine got a polygon that turns both ways
@@ -49,7 +49,7 @@ enum Status : int {
 };
 
 // Why a polygon is invalid (Status INVALID_POLYGON), with the ring and the vertex that
-// starts the offending edge (minkowski2d._polygon turns these into messages).
+// starts the offending edge (minkowski2d._engine.polygon turns these into messages).
 enum Invalid : int {
   RING_FEW_VERTICES = 1,  // a ring has fewer than 3 distinct vertices
   RING_NO_AREA = 2,       // all vertices of a ring lie on one line

@@ -1,6 +1,6 @@
 // module.cpp -- the nanobind module minkowski2d._core._ext: thin bindings over the
 // header-only kernels (exact.hpp, convex.hpp, collision.hpp). Validation of shapes and
-// kinds happens in minkowski2d._dispatch; these functions trust contiguous (n, 2) arrays
+// kinds happens in minkowski2d._engine.dispatch; these functions trust contiguous (n, 2) arrays
 // of int64 (|x| < 2^62) or float64 and report problems as Status codes.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>

@@ -14,7 +14,7 @@
 // status is a Status (OK, NONFINITE, INVALID_POLYGON), reason an Invalid code, ring the
 // global ring index and vertex the index inside that ring (the caller's numbering, the
 // first vertex of the offending edge). The offsets are checked here (malformed ones are a
-// ValueError: they come from minkowski2d._polygon, not from users); the kernels run with
+// ValueError: they come from minkowski2d._engine.polygon, not from users); the kernels run with
 // the GIL released.
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>

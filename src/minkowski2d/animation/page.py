@@ -573,7 +573,7 @@ def animate(
 
 
 def write_demo_page(path: str | Path = "animation.html") -> Path:
-    """Write the animation of the seed's example (triangle ⊕ unit square) to ``path``.
+    """Write the animation of the built-in example (triangle ⊕ unit square) to ``path``.
 
     Examples
     --------

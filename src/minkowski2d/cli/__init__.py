@@ -110,7 +110,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
 
-    p = sub.add_parser("demo", help="the seed's example: triangle ⊕ square (and its animation)")
+    p = sub.add_parser("demo", help="the built-in example: triangle ⊕ square (and its animation)")
     p.add_argument("-o", "--output", help="where to write the animation page (animation.html)")
     p.set_defaults(func=_cmd_demo)
 

@@ -94,7 +94,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     from .common import CLIError
 
     if (args.a is None) != (args.b is None):
-        raise CLIError("serve: give both polygons A and B, or neither (for the seed's example)")
+        raise CLIError("serve: give both polygons A and B, or neither (for the built-in example)")
     a = SEED_A if args.a is None else read_polygon(args.a, "A")
     b = SEED_B if args.b is None else read_polygon(args.b, "B")
     if not 0 <= args.port <= 65535:

@@ -379,7 +379,7 @@ def _map(polygon: Any, fn_args: tuple) -> Any:
             convex=False,
             names=("polygon",),
         )
-    # lists and tuples of polygons (containers went through _containers above)
+    # lists and tuples of polygons (containers went through _engine.containers above)
     res = _batch(list(polygon), fn_args)
     if isinstance(polygon, np.ndarray):
         return _list_result(res)
