@@ -256,7 +256,7 @@ _GUARD = 600
 
 
 def test_cli_serve_prints_url_and_stops_on_ctrl_c():
-    """Ctrl-C stops the server at once whatever its workers are doing (issue 19): here
+    """Ctrl-C stops the server at once whatever its workers are doing: here
     every worker is held by an upload that never comes, and one more waits in the
     queue. The test waits for the process to exit, not for a clock: the stalled
     connections are ended by the stop (their end of stream, no 408, which the server

@@ -80,7 +80,7 @@ def test_shapely_arrays_as_operands():
     shapely = pytest.importorskip("shapely")
     squares = shapely.box(np.arange(5.0), 0, np.arange(5.0) + 1, 1)
     r = mk.minkowski_sum_many(squares, [(0, 0), (1, 0), (0, 1)])
-    # an object array in, an object array of shapely geometries out (issue 13)
+    # an object array in, an object array of shapely geometries out
     assert isinstance(r, np.ndarray) and r.dtype == object and r.shape == (5,)
     for k in range(5):
         want = mk.minkowski_sum(squares[k], [(0, 0), (1, 0), (0, 1)])
@@ -121,7 +121,7 @@ def test_empty_batch():
 
 
 # --------------------------------------------------------------------------------------
-# Ragged as a container (issue 13): slicing, concat, equality, size, GeoArrow, pickling
+# Ragged as a container: slicing, concat, equality, size, GeoArrow, pickling
 
 
 def _ragged(n: int = 50, seed: int = 0) -> mk.Ragged:

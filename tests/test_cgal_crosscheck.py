@@ -12,7 +12,7 @@ The reference is CGAL (Epeck kernel, reduced convolution, its default) through
 ``tests/cgal_peer.py``: the exact rational vertices, each coordinate correctly rounded
 to float64, with CGAL's exactly collinear vertices dropped (decided on the rationals).
 
-What is compared, strictly (the output contract of issue 16):
+What is compared, strictly (the output contract of the exact overlay):
 
 * the number of polygons and of holes;
 * the exterior's vertex SET equals CGAL's rounded exterior vertex set (bit for bit; 0.0
@@ -28,7 +28,7 @@ comparisons failed: intersection vertices an ulp off, near-collinear vertices ke
 lost, GEOS errors, a lost region. ``python -m tests.test_cgal_crosscheck [-v]`` prints
 the tally by kind of mismatch (and each one).
 
-Also here: the two reproducers of issue 16 (a dagli part rotated by 105 degrees with
+Also here: the two reproducers of the overlay report (a dagli part rotated by 105 degrees with
 itself: area 107.99999...; a shirts pair that GEOS fails to node with
 ``method="convolution"``), and a third found by ``benchmarks/bench_nfp_free.py`` (two
 U-shaped jakobs2 parts at 86 degrees: area 194 instead of 196).
@@ -266,7 +266,7 @@ def test_nfp_vertex_sets_equal_cgal(key, variant):
     assert bad is None, f"{key_id(key, variant)}: {bad[0]}: {bad[1]}"
 
 
-# the reproducers of issue 16, with the coordinates as the issue gives them (rounded to
+# the reproducers of the overlay report, with the coordinates as it gives them (rounded to
 # 6 decimals: the full-precision rotation of that dagli part does not lose the region),
 # and one found by benchmarks/bench_nfp_free.py: two U-shaped jakobs2 parts (5 and 6),
 # both rotated by 86 degrees, where the decomposition loses 2 of 196 units of area

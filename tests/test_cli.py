@@ -115,7 +115,7 @@ def test_unwritable_output_is_one_line(capsys, files, tmp_path):
 
 
 # --------------------------------------------------------------------------------------
-# issue 9: "Files a user can lose"
+# "Files a user can lose"
 
 SQUARE = "[[0, 0], [4, 0], [4, 4], [0, 4]]"
 UNIT = "[[0, 0], [1, 0], [1, 1], [0, 1]]"

@@ -1,4 +1,4 @@
-"""The CLI on collections (issue 13): GeoJSON FeatureCollections of N features in, N out,
+"""The CLI on collections: GeoJSON FeatureCollections of N features in, N out,
 properties kept; DXF drawings through ezdxf; exit statuses; shell completion."""
 
 from __future__ import annotations
@@ -144,7 +144,7 @@ def test_dxf_closed_polylines_read_back(tmp_path, capsys):
     arcs = ezdxf.new()
     arcs.modelspace().add_lwpolyline([(0, 0, 0, 0, 0.5), (2, 0), (0, 2)], close=True)
     arcs.saveas(tmp_path / "arcs.dxf")
-    rc, out, err = run(["hull", tmp_path / "arcs.dxf"], capsys)  # arcs are read (issue 19)
+    rc, out, err = run(["hull", tmp_path / "arcs.dxf"], capsys)  # arcs are read
     ring = json.loads(out)["features"][0]["geometry"]["coordinates"][0]
     assert rc == 0 and len(ring) > 5, err  # the arc became several vertices
     (tmp_path / "junk.dxf").write_text("this is not DXF")

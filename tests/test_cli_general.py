@@ -60,7 +60,7 @@ def test_errors_are_one_line(files, capsys, tmp_path):
     bow.write_text("[[0,0],[2,2],[2,0],[0,2]]")
     assert main(["erode", str(bow), files["unit"]]) == 2
     err = capsys.readouterr().err
-    # the message names the file (issue 19: the CLI names files, not Python arguments)
+    # the message names the file (the CLI names files, not Python arguments)
     assert err.startswith(f"minkowski2d: error: {bow}: not a valid polygon")
     assert err.count("\n") == 1
 

@@ -1,4 +1,4 @@
-"""``minkowski2d nest`` (issue 22): instances in (ESICUP JSON, GeoJSON, DXF), a layout out
+"""``minkowski2d nest``: instances in (ESICUP JSON, GeoJSON, DXF), a layout out
 (JSON on standard output, or -o .json/.geojson/.svg/.dxf), a summary on standard error,
 bad input as one line and exit status 2 with no file written. Small ``--iterations``
 budgets, never the clock."""

@@ -589,7 +589,7 @@ def test_common_point_on_a_thin_minkowski_difference():
 @SETTINGS
 @given(convex_float(max_size=12), convex_float(max_size=12), st.floats(0.0, 1.0))
 def test_overlapping_distance_witnesses_are_one_point(a, b, t):
-    """Issue 9: when the polygons intersect, distance() documents point_a == point_b; the
+    """When the polygons intersect, distance() documents point_a == point_b; the
     two witnesses must be the very same floats (they used to differ by an ulp)."""
     # move B so that its first vertex lands between A's centroid and A's first vertex:
     # the pair then overlaps (or touches) in most examples
@@ -606,7 +606,7 @@ def test_overlapping_distance_witnesses_are_one_point(a, b, t):
 
 
 def test_overlapping_distance_witnesses_regression():
-    """Issue 9, the reported shape of the bug: overlapping interiors (the common point
+    """The reported shape of the bug: overlapping interiors (the common point
     comes from float barycentric weights), witnesses identical bit for bit, also on the
     exact path (Fractions) and in the batch."""
     tri = [(0.1, 0.2), (10.3, 7.7), (-3.0, 5.0)]

@@ -1,4 +1,4 @@
-"""Containers in and out of the batch functions (issue 13): GeoSeries with index and CRS,
+"""Containers in and out of the batch functions: GeoSeries with index and CRS,
 GeometryArray, numpy object arrays of any shape; None and empty members; errors naming the
 caller's index; progress reporting."""
 

@@ -1,4 +1,4 @@
-"""Fuzzing the readers, the command line and the server API (issue 9).
+"""Fuzzing the readers, the command line and the server API.
 
 The property everywhere: any input gives either a valid result or a GeometryError, never
 another exception, never a hang, and never a file written on error. Hypothesis runs

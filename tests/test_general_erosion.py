@@ -1,5 +1,5 @@
-"""Erosion ``A ⊖ B = {c : c + B ⊆ A}`` when B does not hold its own origin (issue 9,
-part 1): the named cases, the inner-fit polygon of a part in a rectangular sheet (exact),
+"""Erosion ``A ⊖ B = {c : c + B ⊆ A}`` when B does not hold its own origin: the
+named cases, the inner-fit polygon of a part in a rectangular sheet (exact),
 and random small integer polygons against a brute-force oracle (``c + B ⊆ A`` decided
 exactly for sampled rational c)."""
 

@@ -1,5 +1,5 @@
 """General sums, erosion and decomposition at extreme magnitudes, GEOS failures turned
-into GeometryError, integers beyond 2**53, and the bounds on work (issue 9, part 2-3).
+into GeometryError, integers beyond 2**53, and the bounds on work.
 
 The reference is exact: the L-shape's sums and erosions have vertices that are integer
 multiples of the scale ``s``, so every result is compared coordinate for coordinate with

@@ -143,7 +143,7 @@ def test_two_polygon_dat_needs_a_selector():
 
 
 # --------------------------------------------------------------------------------------
-# issue 9: "Exceptions that are not GeometryErrors"
+# "Exceptions that are not GeometryErrors"
 
 
 class TestExceptionsThatAreNotGeometryErrors:

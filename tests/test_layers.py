@@ -1,4 +1,4 @@
-"""The house rules of docs/design.md's map, checked on the source (issue 18): one gateway to
+"""The house rules of docs/design.md's map, checked on the source: one gateway to
 the compiled core, limits read from it, the engine below the public API, small modules
 and functions, no import circle."""
 

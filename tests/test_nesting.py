@@ -1,4 +1,4 @@
-"""No-fit polygons, inner-fit polygons and batched general sums (issue 12).
+"""No-fit polygons, inner-fit polygons and batched general sums.
 
 References: a brute-force oracle (triangulate both parts with GEOS's constrained
 Delaunay triangulation, sum every triangle pair as the hull of its nine vertex sums,

@@ -1,4 +1,4 @@
-"""Layout and Placement (issue 22): the data model, its measures, the placed polygons, the
+"""Layout and Placement: the data model, its measures, the placed polygons, the
 files (JSON and GeoJSON round trips, SVG, DXF) and the drawing, on hand-made layouts."""
 
 from __future__ import annotations

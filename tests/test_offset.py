@@ -328,7 +328,7 @@ def test_errors():
     with pytest.raises(GeometryError) as e:
         mk.offset(SQUARE, 1, tolerance=0)
     assert e.value.argument == "tolerance" and e.value.hint
-    # no tolerance: the documented default, 1e-3 * |r| (issue 19), not an error
+    # no tolerance: the documented default, 1e-3 * |r|, not an error
     assert mk.offset(SQUARE, 1).equals(mk.offset(SQUARE, 1, tolerance=1e-3))
     with pytest.raises(GeometryError) as e:
         mk.offset(SQUARE, float("nan"), tolerance=1)
@@ -513,7 +513,7 @@ def test_cli_offset(tmp_path, capsys):
     # DXF in: the shrunk square read back and grown again
     assert main(["offset", str(out), "-r", "0.5", "--join", "miter", "--format", "wkt"]) == 0
     assert shapely.from_wkt(capsys.readouterr().out).equals(shapely.box(0, 0, 4, 4))
-    # a round join without tolerance: the default tolerance, 1e-3 * |r| (issue 19)
+    # a round join without tolerance: the default tolerance, 1e-3 * |r|
     assert main(["offset", str(src), "-r", "1", "--format", "wkt"]) == 0
     got = shapely.from_wkt(capsys.readouterr().out)
     want = mk.offset([(0, 0), (4, 0), (4, 4), (0, 4)], 1, tolerance=1e-3)

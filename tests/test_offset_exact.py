@@ -1,4 +1,4 @@
-"""The one-sided guarantee of :func:`minkowski2d.offset` on the compiled core (issue 16),
+"""The one-sided guarantee of :func:`minkowski2d.offset` on the compiled core,
 checked exactly on random and degenerate inputs.
 
 ``check_offset`` (tests/test_offset.py) compares every boundary segment of the result

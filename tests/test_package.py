@@ -1,4 +1,4 @@
-"""Packaging (issue 13): what ``import minkowski2d`` loads, the version written once, the
+"""Packaging: what ``import minkowski2d`` loads, the version written once, the
 SPDX license and the extras in the installed metadata."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Issue 19, reliability round 3: one regression test per reproducer of the library's
+"""Reliability: one regression test per reproducer of the library's
 classes 1, 2, 4, 5, 7 and 8 (the command line, the server and the overlay have their own
 files), plus property tests where a class is open-ended."""
 

@@ -1,4 +1,4 @@
-"""Issue 19 on the command line: class 6 (one line on stderr, exit status 2, never a
+"""Reliability on the command line: class 6 (one line on stderr, exit status 2, never a
 traceback), the .dat integer beyond int64 (class 8), FeatureCollections with properties
 kept for the plug-in commands, DXF input with arcs, and mk.animate's safe writer."""
 

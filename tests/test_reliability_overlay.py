@@ -1,4 +1,4 @@
-"""Issue 19 reproducers that the exact overlay in the core (issue 16) fixes: class 3 (GEOS
+"""Reproducers that the exact overlay in the core fixes: class 3 (GEOS
 ``simplify`` never returns on 5e-324 coordinates) and the class-8 "valid 3e-200 triangle
 called self-intersecting by general sums".
 

@@ -1,6 +1,6 @@
 """``minkowski2d serve`` (animation/server.py) over real sockets on 127.0.0.1.
 
-Issue 9, "The local server": cross-site requests are refused, every malformed request is
+The local server: cross-site requests are refused, every malformed request is
 answered with a JSON error, and a bounded worker pool answers bursts and survives stalled
 uploads. Every test is bounded in connections and time.
 """
@@ -51,7 +51,7 @@ def error_of(body: bytes) -> dict:
 
 
 class TestLocalServer:
-    """Regression tests for the class "The local server" of issue 9."""
+    """Regression tests for the local server."""
 
     def test_cross_site_post_is_refused(self, server):
         port = server.server_address[1]
@@ -176,7 +176,7 @@ class TestLocalServer:
 
     def test_413_from_content_length_alone(self):
         """A declared body over the cap is answered at once, before any byte of it is
-        sent (issue 19): the server does not wait for the body (here it would wait an
+        sent: the server does not wait for the body (here it would wait an
         hour); the client's socket guard is never what the test waits for."""
         srv = make_server(port=0, timeout=3600.0)
         srv.start_thread()

@@ -1,4 +1,4 @@
-"""Issue 9, "The suite sees what a new machine sees": the CI entry point, the README's test
+"""The suite sees what a new machine sees: the CI entry point, the README's test
 command, and the loud skip of the CGAL corpus tests."""
 
 from __future__ import annotations

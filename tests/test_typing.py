@@ -1,4 +1,4 @@
-"""mypy --strict on user code (issue 13): the public API is typed (no ``Any`` for
+"""mypy --strict on user code: the public API is typed (no ``Any`` for
 polygons), so ``minkowski_sum(1, 2)`` and ``hull="yes"`` are flagged and ordinary calls
 pass. The samples are in tests/typing/; lines that must fail carry ``# E:``."""
 
