@@ -33,7 +33,10 @@ cross-check the mesh's optimality on the maps where it finishes in reasonable ti
 Peers: extremitypathfinder and pyvisgraph on the random scenes up to ``--peer-max-k``
 (default 100: their preparation grows to minutes beyond); extremitypathfinder also on the
 mazes up to ``--peer-max-maze`` (the free space as one polygon; pyvisgraph takes no holes
-or touching obstacles and is skipped on grids).
+or touching obstacles and is skipped on grids). ``pip install -e ".[bench]"`` installs
+every peer but extremitypathfinder, whose metadata asks for numpy < 2 (which coal and
+geopandas exclude); it runs under numpy 2 when installed without its pins:
+``pip install --no-deps "extremitypathfinder>=2.7" "networkx>=3"``.
 
 Real game maps (``--maps``, default: the six GPPC-2013 maps of ``../shared/data/maps``
 when that folder exists, read from there): StarCraft (Archipelago, BigGameHunters,

@@ -22,6 +22,9 @@ SKIP_REASON = (
 
 requires_corpus = pytest.mark.skipif(not CORPUS.is_dir(), reason=SKIP_REASON)
 
+#: the ESICUP nesting instances, shipped with the package (minkowski2d.datasets)
+ESICUP = Path(__file__).resolve().parents[1] / "src" / "minkowski2d" / "datasets" / "esicup"
+
 
 def corpus_files(pattern: str = "*.dat") -> list[Path]:
     """The corpus files matching ``pattern`` (empty when the corpus is missing)."""

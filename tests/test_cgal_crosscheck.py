@@ -49,9 +49,10 @@ import shapely
 
 import minkowski2d as mk
 from tests import cgal_peer
+from tests.corpus import ESICUP
 
 ROOT = Path(__file__).resolve().parents[1]
-DATA = ROOT.parent / "shared" / "data" / "esicup"
+DATA = ESICUP
 INSTANCES = ("dagli", "shirts", "fu", "albano", "jakobs1")
 ANGLES = (15, 105, 200, 315)
 PAIRS_PER_INSTANCE = 6  # × 16 angle combinations = 96 NFPs per instance

@@ -165,6 +165,26 @@ def test_bad_options_are_one_line(tmp_path, capsys, extra, words):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["inst.json"]  # no partial file
 
 
+def test_a_built_in_instance_by_name(tmp_path, capsys, monkeypatch):
+    # no file of that name here: the packaged ESICUP instance of that name is read
+    monkeypatch.chdir(tmp_path)
+    code, out, err = _run(capsys, "nest", "shapes0", "--iterations", "2", "--threads", "1")
+    assert code == 0
+    lay = mk.Layout.from_dict(json.loads(out))
+    assert lay.verify() and lay.name == "shapes0" and len(lay.placements) == 43
+    assert err.startswith("minkowski2d: nest: 43 parts on a strip 40 high")
+    code, out, _ = _run(capsys, "nfp", "shapes0")
+    nfps = json.loads(out)
+    assert code == 0 and nfps["instance"] == "shapes0" and len(nfps["nfps"]) == 16
+    # a file of that name wins over the built-in instance
+    (tmp_path / "shapes0").write_text("not json")
+    code, _, err = _run(capsys, "nest", "shapes0", *FAST)
+    assert code == 2 and "shapes0" in _one_error_line(err)
+    # a name that is neither a file nor a built-in instance: the missing file
+    code, _, err = _run(capsys, "nest", "albanoo", *FAST)
+    assert code == 2 and "albanoo" in _one_error_line(err)
+
+
 def test_bad_files_are_one_line(tmp_path, capsys):
     inst = _instance(tmp_path)
     before = inst.read_text()

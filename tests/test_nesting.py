@@ -21,8 +21,10 @@ import minkowski2d as mk
 from minkowski2d.cli import main
 from minkowski2d.errors import GeometryError, ShapeError
 
+from .corpus import ESICUP
+
 ROOT = Path(__file__).resolve().parents[1]
-DATA = ROOT.parent / "shared" / "data" / "esicup"
+DATA = ESICUP
 DRIVER = ROOT / "build" / "cgal_nfp_driver"
 CLASSIC = [
     "albano", "blaz", "dagli", "dighe1", "dighe2", "fu", "jakobs1", "jakobs2", "mao",

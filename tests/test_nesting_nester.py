@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction as F
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -22,8 +21,8 @@ from minkowski2d.errors import EmptyGeometryError, GeometryError, NonFiniteError
 from minkowski2d.nesting.nfp import rotate_part
 
 from . import nesting_oracle as O
+from .corpus import ESICUP
 
-ESICUP = Path(__file__).resolve().parents[2] / "shared" / "data" / "esicup"
 needs_esicup = pytest.mark.skipif(not ESICUP.is_dir(), reason="../shared/data/esicup missing")
 
 

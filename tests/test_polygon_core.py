@@ -301,11 +301,8 @@ def _split(r: Rings) -> list:
 
 
 def esicup_parts():
-    from pathlib import Path
+    from .corpus import ESICUP as data
 
-    data = Path(__file__).resolve().parents[2] / "shared" / "data" / "esicup"
-    if not data.is_dir():
-        return []
     out = []
     for f in sorted(data.glob("*.json")):
         inst = mk.read_esicup(f)

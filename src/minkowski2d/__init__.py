@@ -72,11 +72,12 @@ def __getattr__(name: str) -> Any:
         from .animation import animate
 
         return animate
-    if name in ("plot", "io"):
+    if name in ("plot", "io", "datasets"):
         import importlib
 
         # plot: a callable module, mk.plot(obj, ax=None, **kwargs), matplotlib loads on
-        # drawing; io: the readers and writers (mk.io.read_grid_map after import mk)
+        # drawing; io: the readers and writers (mk.io.read_grid_map after import mk);
+        # datasets: the built-in instances (mk.datasets.esicup("albano"))
         return importlib.import_module("." + name, __name__)
     raise AttributeError(f"module 'minkowski2d' has no attribute {name!r}")
 

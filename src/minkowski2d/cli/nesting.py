@@ -33,7 +33,11 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         "json: {instance, strip, pieces, nfps: [{i, ri, j, rj, geometry}], ifps: [...]}; "
         "geojson: one FeatureCollection (properties kind, i, ri, j, rj).",
     )
-    p.add_argument("instance", help="instance file (ESICUP JSON, see docs/nesting.md)")
+    p.add_argument(
+        "instance",
+        help="instance file (ESICUP JSON, see docs/nesting.md) or a built-in instance's name "
+        "(albano, shirts, ...: minkowski2d.datasets)",
+    )
     p.add_argument("-o", "--output", help="output file (default: standard output)")
     p.add_argument("--format", choices=("json", "geojson"), default=None)
     p.add_argument(
@@ -54,7 +58,7 @@ def _cmd_nfp(args: argparse.Namespace) -> int:
     fmt = args.format
     if fmt is None:
         fmt = "geojson" if str(args.output or "").lower().endswith(".geojson") else "json"
-    inst = read_esicup(args.instance)
+    inst = read_esicup(_instance_path(args.instance))
     parts, rots = inst["parts"], inst["rotations"]
     props = inst.get("properties") or [None] * len(parts)
     nfps = no_fit_polygons(
@@ -151,7 +155,11 @@ def _add_nest(subparsers: argparse._SubParsersAction) -> None:
         "outline). Without -o the layout's JSON goes to standard output; a summary line "
         "(sheets, length, density) goes to standard error.",
     )
-    p.add_argument("instance", help="INSTANCE.json, PARTS.geojson or PARTS.dxf")
+    p.add_argument(
+        "instance",
+        help="INSTANCE.json, PARTS.geojson, PARTS.dxf or a built-in instance's name "
+        "(albano, shirts, ...: minkowski2d.datasets)",
+    )
     where = p.add_mutually_exclusive_group()
     where.add_argument("--height", type=float, help="strip packing: the strip's height")
     where.add_argument(
@@ -267,13 +275,23 @@ def _nest_format(args: argparse.Namespace) -> str:
     return fmt or "json"
 
 
+def _instance_path(text: str) -> Any:
+    """The file ``text`` names, or the built-in instance of that name where no such file
+    exists (``minkowski2d nest albano``)."""
+    from .. import datasets
+
+    if not Path(text).exists() and text in datasets.esicup_names():
+        return datasets.esicup_path(text)
+    return text
+
+
 def _nest_instance(args: argparse.Namespace) -> dict:
     """The instance: :func:`~minkowski2d.read_esicup`'s, or one of a DXF drawing's
     closed outlines (one copy each, named by their handles)."""
     from ..nesting import read_esicup
 
     if not args.instance.lower().endswith(".dxf"):
-        return read_esicup(args.instance)
+        return read_esicup(_instance_path(args.instance))
     from ..io import read_dxf
 
     feats = read_dxf(args.instance, tolerance=args.arc_tolerance)
