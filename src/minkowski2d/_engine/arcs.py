@@ -52,7 +52,8 @@ __all__ = [
     "circle_ring",
 ]
 
-#: Default tolerance of an arc's approximation, relative to its radius.
+#: Default tolerance of an arc's approximation, relative to its radius: the one default
+#: for every arc made a polygon (DXF arcs read, round joins of offsets, CLI defaults).
 DEFAULT_RELATIVE_TOLERANCE = 1e-3
 #: Relative size of the rounding margin (see the module notes).
 ROUNDING_MARGIN = 2.0**-42

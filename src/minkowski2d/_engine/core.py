@@ -150,8 +150,11 @@ OVERLAY_XOR: int = _ext.OVERLAY_XOR
 FILL_RULES: dict[str, int] = dict(_ext.FILL_RULES)
 #: the value of a work limit that never stops a run (boolean.hpp Limits)
 NO_LIMIT: int = int(_ext.NO_LIMIT)
-#: The general sum's methods (general.cpp).
+#: The general sum's methods (general.cpp; minkowski.hpp Method).
 METHOD_ERODE: int = _ext.METHOD_ERODE
+METHOD_AUTO: int = _ext.METHOD_AUTO
+METHOD_PIECES: int = _ext.METHOD_PIECES
+METHOD_CONVOLUTION: int = _ext.METHOD_CONVOLUTION
 #: The offset's codes (offset.hpp).
 OFFSET_FINE: int = _ext.OFFSET_FINE
 OFFSET_TOLERANCE: int = _ext.OFFSET_TOLERANCE

@@ -27,6 +27,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
 from ..errors import GeometryError
 
 __all__ = [
@@ -179,7 +180,8 @@ def add_arc_option(p: argparse.ArgumentParser) -> None:
         default=None,
         metavar="EPS",
         help="DXF input: arcs become polygons containing the part (parts grow, holes "
-        "shrink) within EPS drawing units (default: 1e-3 times each arc's radius)",
+        "shrink) within EPS drawing units (default: "
+        f"{DEFAULT_RELATIVE_TOLERANCE:g} times each arc's radius)",
     )
 
 

@@ -11,6 +11,7 @@ import sys
 from typing import Any
 
 from .. import io as _io
+from ..offset.curves import APPROX, DEFAULT_TOLERANCE, JOINS, MITER_LIMIT
 from .common import output_format
 
 #: the library's output formats, and DXF (written here, with exact arcs)
@@ -23,7 +24,8 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         "offset",
         help="grow (r > 0) or shrink (r < 0) a polygon by a disk, with a guaranteed error",
         description="Offset a polygon by a disk of radius |r|. json/geojson/wkt write a "
-        "polygon within --tolerance (default 1e-3 |r|) of the true offset, on the side "
+        f"polygon within --tolerance (default {DEFAULT_TOLERANCE:g} |r|) of the true "
+        "offset, on the side "
         "--approx names (outer: it contains the true set). svg and dxf write the exact "
         "boundary, with circular arcs (a round join), unless --tolerance is given. "
         "GeoJSON FeatureCollections and DXF drawings give one result per feature (part), "
@@ -36,12 +38,12 @@ def add_parser(subparsers: argparse._SubParsersAction) -> None:
         "--tolerance",
         type=float,
         default=None,
-        help="largest error of a round join (default: 1e-3 times |r|; svg and dxf then "
-        "write exact arcs)",
+        help=f"largest error of a round join (default: {DEFAULT_TOLERANCE:g} times |r|; "
+        "svg and dxf then write exact arcs)",
     )
-    p.add_argument("--approx", choices=("outer", "inner"), default="outer")
-    p.add_argument("--join", choices=("round", "miter", "square"), default="round")
-    p.add_argument("--miter-limit", type=float, default=2.0)
+    p.add_argument("--approx", choices=APPROX, default=APPROX[0])
+    p.add_argument("--join", choices=JOINS, default=JOINS[0])
+    p.add_argument("--miter-limit", type=float, default=MITER_LIMIT)
     p.add_argument("-o", "--output", help="output file (default: standard output)")
     from .common import add_arc_option
 

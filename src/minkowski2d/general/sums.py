@@ -64,8 +64,19 @@ class _Prepared:
         return self._pieces
 
 
-_METHOD_CODE = {"auto": 0, None: 0, "decomposition": 1, "convolution": 2}
-_USED = {0: "flat", 1: "decomposition", 2: "convolution"}
+#: the public method names -> the core's codes (minkowski.hpp Method), and back for
+#: ``method_used`` (the core reports AUTO for a sum it did not need to decompose: "flat")
+_METHOD_CODE = {
+    "auto": core.METHOD_AUTO,
+    None: core.METHOD_AUTO,
+    "decomposition": core.METHOD_PIECES,
+    "convolution": core.METHOD_CONVOLUTION,
+}
+_USED = {
+    core.METHOD_AUTO: "flat",
+    core.METHOD_PIECES: "decomposition",
+    core.METHOD_CONVOLUTION: "convolution",
+}
 
 
 _NO_PIECES = (np.empty((0, 2)), np.zeros(1, np.int64))

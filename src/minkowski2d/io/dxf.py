@@ -32,8 +32,9 @@ def read_dxf(
 
     Arcs are read with a one-sided approximation (see :mod:`minkowski2d._engine.arcs`): the
     polygon contains the part (parts grow, holes shrink) and lies within ``tolerance``
-    of it. ``tolerance``: the largest error, in drawing units; default (None) ``1e-3``
-    times each arc's radius. The exact outline is kept on the feature (``arcs``: one
+    of it. ``tolerance``: the largest error, in drawing units; default (None)
+    :data:`~minkowski2d._engine.arcs.DEFAULT_RELATIVE_TOLERANCE` (``1e-3``) times each
+    arc's radius. The exact outline is kept on the feature (``arcs``: one
     ``(k, 3)`` array ``(x, y, bulge)`` per ring, exterior first). A part without arcs is
     read exactly (an (n, 2) array, ints where the coordinates are whole numbers).
 

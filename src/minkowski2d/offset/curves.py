@@ -10,6 +10,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from .._engine import options as _options
+from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
 from .._engine.coerce import as_array, is_shapely
 from .._engine.containers import is_many
 from ..errors import (
@@ -24,10 +25,12 @@ from ..errors import (
 #: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
 #: (raised to the least tolerance float64 can guarantee at the input's magnitude when
 #: that is larger).
-DEFAULT_TOLERANCE = 1e-3
+DEFAULT_TOLERANCE = DEFAULT_RELATIVE_TOLERANCE
 
 APPROX = ("outer", "inner")
 JOINS = ("round", "miter", "square")
+#: The default ``miter_limit`` of :func:`offset` (a multiple of ``|r|``).
+MITER_LIMIT = 2.0
 _JOIN_CODE = {"round": 0, "miter": 1, "square": 2}
 
 
@@ -430,7 +433,7 @@ def offset(
     tolerance: float | None = None,
     approx: str = "outer",
     join: str = "round",
-    miter_limit: float = 2.0,
+    miter_limit: float = MITER_LIMIT,
 ) -> Any:
     """Grow (``distance > 0``) or shrink (``distance < 0``) a polygon by a disk, with a
     guaranteed one-sided error.
