@@ -1,6 +1,8 @@
 """The one router: what the caller gave -> (kind, data) -> the compiled core or the exact
 Python path; status codes -> exceptions.
 
+Status codes become exceptions in :mod:`minkowski2d._engine.status` (re-exported here).
+
 Paths
 -----
 * ``"i"``: the core's int64 kernels. Ints with ``|x| < 2**62`` (``core.INT_LIMIT``), so
@@ -32,16 +34,11 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from ..errors import (
-    GeometryError,
-    NonFiniteError,
-    OverflowGeometryError,
-    ShapeError,
-)
 from . import core
 from . import exact as _exact
 from .coerce import EXACT, FLOAT, INT, XFLOAT, as_array, py_points
 from .core import Status
+from .status import raise_status, status_error
 
 __all__ = ["Status", "Operand", "operand", "pair", "status_error", "raise_status"]
 
@@ -61,41 +58,6 @@ class Operand(NamedTuple):
     data: Any
     kind: str
     path: str
-
-
-def status_error(code: int, vertex: int, name: str, coords: Any = None) -> GeometryError:
-    """The exception for a core status code (vertex in the caller's numbering)."""
-    code = int(code)
-    vertex = int(vertex)
-    if code in (Status.TURNS_BOTH_WAYS, Status.SPIKE, Status.WINDS_TWICE):
-        return _exact.not_convex(name, code, vertex)
-    if code == Status.OVERFLOW:
-        return OverflowGeometryError(
-            "result overflows float64 (a coordinate is infinite)",
-            argument="result",
-            hint="scale the input down (the result is exact up to the final rounding)",
-        )
-    if code == Status.NONFINITE:
-        what = ""
-        if coords is not None:
-            try:
-                x, y = coords[vertex]
-                what = f" ({float(x)!r}, {float(y)!r})"
-            except Exception:  # noqa: BLE001 - the message is best effort
-                what = ""
-        return NonFiniteError(
-            f"{name}: vertex {vertex} has a non-finite coordinate{what}",
-            argument=name,
-            vertex=vertex,
-            hint="remove NaN and infinite values",
-        )
-    return ShapeError(f"{name}: cannot be read (status {code})", argument=name)
-
-
-def raise_status(code: int, vertex: int, name: str, coords: Any = None) -> None:
-    """Raise :func:`status_error` unless ``code`` is OK."""
-    if code:
-        raise status_error(code, vertex, name, coords)
 
 
 def _int_in_core(arr: np.ndarray) -> bool:

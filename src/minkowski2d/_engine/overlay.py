@@ -18,8 +18,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import GeometryError, OverflowGeometryError, ResourceLimitError
 from . import core
+from .status import status_error
 
 __all__ = ["overlay", "geometries", "closed_geometries"]
 
@@ -108,21 +108,5 @@ def overlay(
 
 def check(status: int, argument: str) -> None:
     """Raise the error a status of the overlay stands for (OK: nothing)."""
-    if status == core.Status.OK:
-        return
-    if status == core.Status.OVERFLOW:
-        raise OverflowGeometryError(
-            f"{argument}: the result overflows float64 (a coordinate beyond ±1.8e308)",
-            argument=argument,
-            hint="scale the input down; the result's coordinates must fit in float64",
-        )
-    if status == core.Status.RESOURCE:
-        raise ResourceLimitError(
-            f"{argument}: the overlay needs more work than its limits allow",
-            argument=argument,
-            hint="simplify the polygons",
-        )
-    raise GeometryError(
-        f"{argument}: internal error {status} in the exact overlay (please report it)",
-        argument=argument,
-    )
+    if status != core.Status.OK:
+        raise status_error(status, name=argument, what="the overlay")

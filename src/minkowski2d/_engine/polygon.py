@@ -29,9 +29,10 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from ..errors import EmptyGeometryError, GeometryError, NonFiniteError, SelfIntersectionError
+from ..errors import EmptyGeometryError, GeometryError
 from . import core
 from .core import Invalid, Status
+from .status import status_error
 
 __all__ = [
     "Rings",
@@ -147,22 +148,18 @@ def problem_error(
     """The exception for a status of the core's polygon checks (vertex: the first vertex
     of the offending edge, counted inside its ring as the caller gave it)."""
     status, reason, ring, vertex = int(status), int(reason), int(ring), int(vertex)
-    if status == Status.NONFINITE:
-        return NonFiniteError(
-            f"{name}: a coordinate is not finite ({_where(rings, ring, vertex)})",
-            argument=name,
-            vertex=vertex,
-            hint=nonfinite_hint,
-        )
+    detail = None
     if status == Status.INVALID_POLYGON:
-        text = _TEXT.get(Invalid(reason), f"reason {reason}")  # type: ignore[call-overload]
-        return SelfIntersectionError(
-            f"{name}: {what} ({text} at {_where(rings, ring, vertex)})",
-            argument=name,
-            vertex=vertex,
-            hint=hint,
-        )
-    return GeometryError(f"{name}: cannot be checked (status {status})", argument=name)
+        detail = _TEXT.get(Invalid(reason), f"reason {reason}")  # type: ignore[call-overload]
+    return status_error(
+        status,
+        vertex,
+        name,
+        what=what if status == Status.INVALID_POLYGON else "the polygon check",
+        where=_where(rings, ring, vertex),
+        detail=detail,
+        hint=nonfinite_hint if status == Status.NONFINITE else hint,
+    )
 
 
 def _args(rings: Rings) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

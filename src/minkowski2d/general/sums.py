@@ -10,11 +10,10 @@ import numpy as np
 from .._engine import core
 from .._engine import options as _options
 from .._engine.overlay import geometries
+from .._engine.status import Status, status_error
 from ..batch import Ragged
 from ..errors import (
     GeometryError,
-    OverflowGeometryError,
-    ResourceLimitError,
     ShapeError,
 )
 from . import limits
@@ -124,44 +123,31 @@ def _table(preps: list[_Prepared], with_pieces: list[bool], decomposition: str) 
 
 
 def _status_error(code: int, name_a: str, name_b: str, method: str) -> GeometryError:
-    from .._engine.dispatch import Status
-
     both = f"{name_a}, {name_b}"
-    if code == Status.SHAPE:
-        return ShapeError(
-            f"{both}: both operands are points or segments: the sum has no area",
-            argument=both,
-        )
-    if code == Status.OVERFLOW:
-        return OverflowGeometryError(
-            f"{both}: the result overflows float64 (a coordinate beyond ±1.8e308)",
-            argument=both,
-            hint="scale the input down; the result's coordinates must fit in float64",
-        )
-    if code == Status.RESOURCE:
-        what = {
-            "decomposition": f"MAX_PIECE_PAIRS = {limits.MAX_PIECE_PAIRS} piece sums or "
-            f"MAX_CROSSINGS = {limits.MAX_CROSSINGS} crossings",
-            "convolution": f"MAX_CONVOLUTION_SEGMENTS = {limits.MAX_CONVOLUTION_SEGMENTS} segments "
-            f"or MAX_CROSSINGS = {limits.MAX_CROSSINGS} crossings",
-        }.get(
-            method,
-            "the limits of both methods (MAX_CONVOLUTION_SEGMENTS, MAX_PIECE_PAIRS, MAX_CROSSINGS)",
-        )
-        hint = {
-            "decomposition": "leave method unset (it switches to the convolution), or "
-            "simplify the polygons",
-            "convolution": "use method='decomposition' (or leave method unset), or simplify "
-            "the polygons",
-        }.get(method, "simplify the polygons (fewer reflex vertices)")
-        return ResourceLimitError(
-            f"{both}: the sum needs more work than {what}",
-            argument=both,
-            hint=hint + "; the limits are module constants of minkowski2d.general",
-        )
-    return GeometryError(
-        f"{both}: internal error {code} in the exact overlay (please report it)",
-        argument=both,
+    limits_text = {
+        "decomposition": f"MAX_PIECE_PAIRS = {limits.MAX_PIECE_PAIRS} piece sums or "
+        f"MAX_CROSSINGS = {limits.MAX_CROSSINGS} crossings",
+        "convolution": f"MAX_CONVOLUTION_SEGMENTS = {limits.MAX_CONVOLUTION_SEGMENTS} segments "
+        f"or MAX_CROSSINGS = {limits.MAX_CROSSINGS} crossings",
+    }.get(
+        method,
+        "the limits of both methods (MAX_CONVOLUTION_SEGMENTS, MAX_PIECE_PAIRS, MAX_CROSSINGS)",
+    )
+    hint = {
+        "decomposition": "leave method unset (it switches to the convolution), or "
+        "simplify the polygons",
+        "convolution": "use method='decomposition' (or leave method unset), or simplify "
+        "the polygons",
+    }.get(method, "simplify the polygons (fewer reflex vertices)")
+    return status_error(
+        code,
+        name=both,
+        what="the sum",
+        detail="both operands are points or segments: the sum has no area",
+        limits=limits_text,
+        hint=hint + "; the limits are module constants of minkowski2d.general"
+        if code == Status.RESOURCE
+        else None,
     )
 
 

@@ -13,12 +13,12 @@ from .._engine import options as _options
 from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
 from .._engine.coerce import as_array, is_shapely
 from .._engine.containers import is_many
+from .._engine.status import status_error
 from ..errors import (
     EmptyGeometryError,
     GeometryError,
     NonFiniteError,
     OverflowGeometryError,
-    ResourceLimitError,
     ShapeError,
 )
 
@@ -298,20 +298,25 @@ def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: A
             hint="scale the input up by a power of two, and the result down",
         )
     if status == core.Status.RESOURCE:
-        raise ResourceLimitError(
-            "polygon: the offset's overlay would exceed its work limit",
-            argument="polygon",
+        raise status_error(
+            status,
+            name="polygon",
+            what="the offset",
+            limits="its overlay's work limit allows",
             hint="offset fewer vertices at once, or with a coarser tolerance",
         )
     if code == core.OFFSET_OVERFLOWS or status == core.Status.OVERFLOW:
-        raise OverflowGeometryError(
-            "result: the offset does not fit in float64 (a coordinate is infinite)",
-            argument="result",
+        raise status_error(
+            core.Status.OVERFLOW,
+            name="result",
+            what="the offset",
             hint="scale the input down (or offset by a smaller distance)",
         )
-    if code != core.OFFSET_FINE or status != core.Status.OK:
+    if status != core.Status.OK:
+        raise status_error(status, name="polygon", what="the offset")
+    if code != core.OFFSET_FINE:
         raise GeometryError(
-            f"polygon: the offset could not be certified (code {code}, status {status})",
+            f"polygon: the offset could not be certified (code {code})",
             argument="polygon",
             hint="this is a bug: please report the input",
         )
