@@ -75,21 +75,15 @@ def checked_polygonal(geom: Any, name: str, hint: str, nonfinite_hint: str | Non
     well-defined region: it is split into its parts (by the core's exact overlay: the
     union of its rings, traced ring by ring, splits at the touching points).
     """
-    from .overlay import overlay
-    from .polygon import check, oriented, rings_of, to_geometry
+    from .polygon import check_split, oriented, rings_of, to_geometry
 
     if geom.is_empty:
         raise EmptyGeometryError(f"{name}: empty {geom.geom_type}", argument=name)
     multi = geom.geom_type == "MultiPolygon"
-    rings = rings_of(geom)
-    ck = check(rings, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
-    if ck.disconnected.any():
-        o = oriented(rings, ck.orientation)
-        ro = o.ring_offsets
-        geom = overlay([o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)], argument=name)
-        multi = geom.geom_type == "MultiPolygon"
-        rings = rings_of(geom)
-        ck = check(rings, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
+    given = rings_of(geom)
+    rings, ck = check_split(given, name, hint, disjoint=multi, nonfinite_hint=nonfinite_hint)
+    if rings is not given:  # split into its parts: one Polygon, or a MultiPolygon of them
+        multi = len(rings.polygon_offsets) > 2
     return to_geometry(oriented(rings, ck.orientation), multi)
 
 

@@ -41,6 +41,7 @@ __all__ = [
     "rings_of",
     "rings_of_array",
     "check",
+    "check_split",
     "triangulate",
     "oriented",
     "to_geometry",
@@ -199,6 +200,32 @@ def check(
             nonfinite_hint=nonfinite_hint, what=what,
         )  # fmt: skip
     return Checked(orientation, disconnected)
+
+
+def check_split(
+    rings: Rings,
+    name: str,
+    hint: str | None = None,
+    *,
+    disjoint: bool = False,
+    nonfinite_hint: str | None = None,
+) -> tuple[Rings, Checked]:
+    """:func:`check`, and a polygon whose hole touches its shell at two points (valid
+    for CGAL, "interior is disconnected" for GEOS: a well-defined region) split into its
+    parts by the exact overlay (the union of its rings, traced ring by ring, splits at
+    the touching points) and checked again: ``(rings, checked)``, the rings as they
+    were or the parts'."""
+    ck = check(rings, name, hint, disjoint=disjoint, nonfinite_hint=nonfinite_hint)
+    if not ck.disconnected.any():
+        return rings, ck
+    from .overlay import overlay
+
+    o = oriented(rings, ck.orientation)
+    ro = o.ring_offsets
+    parts = rings_of(
+        overlay([o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)], argument=name)
+    )
+    return parts, check(parts, name, hint, disjoint=True, nonfinite_hint=nonfinite_hint)
 
 
 def probe(rings: Rings, *, disjoint: bool = False) -> tuple:

@@ -16,7 +16,6 @@ from ..batch import Ragged
 from ..errors import (
     EmptyGeometryError,
     GeometryError,
-    NonFiniteError,
     OverflowGeometryError,
     ShapeError,
 )
@@ -203,17 +202,9 @@ _HINT = "the boundary must not cross itself; holes must lie inside"
 def _checked(rings: Any, name: str, multi: bool) -> _Operand:
     """An operand of validated rings (a polygon whose hole touches its shell twice is
     split into its parts by the exact overlay)."""
-    from .._engine.polygon import check, rings_of
+    from .._engine.polygon import check_split
 
-    ck = check(rings, name, _HINT, disjoint=multi)
-    if ck.disconnected.any():
-        from .._engine.polygon import oriented
-
-        o = oriented(rings, ck.orientation)
-        ro = o.ring_offsets
-        g = _union_members_rings([o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)], name)
-        rings = rings_of(g)
-        ck = check(rings, name, _HINT, disjoint=True)
+    rings, ck = check_split(rings, name, _HINT, disjoint=multi)
     return _Operand(rings, ck.orientation, None, name)
 
 
@@ -239,16 +230,13 @@ def _build(raw: _Raw) -> _Operand:
             o = oriented(op.rings, op.orientation)
             ro = o.ring_offsets
             rings += [o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)]
-        g = _union_members_rings(rings, name)
+        from .._engine.overlay import overlay
+
+        g = overlay(rings, argument=name)
         if g.is_empty:
             raise ShapeError(f"{name}: the polygons have no area", argument=name)
         return _checked(rings_of(g), name, g.geom_type == "MultiPolygon")
     if raw.kind == "geom":
-        import shapely
-
-        c = shapely.get_coordinates(raw.value)
-        if not np.isfinite(c).all():
-            raise NonFiniteError(f"{name}: a coordinate is not finite", argument=name)
         return _checked(rings_of(raw.value), name, raw.value.geom_type == "MultiPolygon")
     ring = _float_ring(raw)
     rings = rings_of_array(ring)
@@ -264,14 +252,6 @@ def _build(raw: _Raw) -> _Operand:
 
             return _Operand(None, None, np.asarray(D.hull(ring, "points"), dtype=np.float64), name)
     return _checked(rings, name, False)
-
-
-def _union_members_rings(rings: list, name: str) -> Any:
-    """The union of validated rings (exteriors CCW, holes CW), by the exact overlay;
-    vertices where members cross are rounded to the nearest double."""
-    from .._engine.overlay import overlay
-
-    return overlay(rings, argument=name)
 
 
 def _operands(*pairs: tuple[Any, str]) -> list[_Operand]:
