@@ -95,6 +95,11 @@ def rings_of(geom: Any) -> Rings:
     return Rings(xy, ro, po)
 
 
+#: the offsets of one polygon in one geometry (read-only: shared by every call)
+_ONE = np.array([0, 1], np.int64)
+_ONE.flags.writeable = False
+
+
 def polygon_arrays(geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The polygons of T shapely geometries as flat arrays, the one reader of them.
 
@@ -114,6 +119,12 @@ def polygon_arrays(geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarra
     """
     import shapely
 
+    if len(geoms) == 1:  # one polygon without holes (the most common operand): its ring
+        g = geoms[0]
+        if shapely.lib.get_type_id(g) == 3 and shapely.lib.get_num_interior_rings(g) == 0:
+            xy = np.ascontiguousarray(shapely.get_coordinates(g), np.float64)
+            if len(xy):
+                return xy, np.array([0, len(xy)], np.int64), _ONE, _ONE
     wkb = shapely.to_wkb(geoms, output_dimension=2, byte_order=1, flavor="iso")
     return core.polygons_wkb_f(wkb.tolist())
 

@@ -58,21 +58,13 @@ _HINT = "repair it: the boundary must not cross itself, holes must lie inside"
 _NONFINITE_HINT = "remove NaN and inf"
 
 
-def _flat(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _arrays(geoms: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Coordinates (closing repeats kept), ring offsets and polygon offsets of shapely
-    Polygons (empty ones dropped)."""
-    import shapely
+    Polygons (empty ones dropped): the one reader's (``polygon_arrays``)."""
+    from .._engine.polygon import polygon_arrays
 
-    if len(geoms) == 1 and shapely.lib.get_num_interior_rings(geoms[0]) == 0:
-        xy = shapely.get_coordinates(geoms[0])
-        return xy, np.array([0, len(xy)], np.int64), _GEOM1
-    rings, part = shapely.get_rings(geoms, return_index=True)
-    xy = shapely.get_coordinates(rings)
-    ring_off = np.zeros(len(rings) + 1, np.int64)
-    np.cumsum(shapely.get_num_coordinates(rings), out=ring_off[1:])
-    starts = np.r_[0, np.flatnonzero(np.diff(part)) + 1]  # each polygon's shell
-    poly_off = np.r_[starts, len(rings)].astype(np.int64)
-    return np.ascontiguousarray(xy, np.float64), ring_off, poly_off
+    xy, ro, po, _ = polygon_arrays(np.array(geoms, dtype=object))
+    return xy, ro, po
 
 
 def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
@@ -121,7 +113,7 @@ def _shapely_input(geom: Any, name: str) -> _Input:
     elif gt == "Polygon":
         if geom.is_empty:
             raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
-        return _validated(*_flat([geom]), name, False)
+        return _validated(*_arrays([geom]), name, False)
     elif gt == "MultiPolygon":
         polys = shapely.get_parts(geom)
     else:
@@ -133,7 +125,7 @@ def _shapely_input(geom: Any, name: str) -> _Input:
     polys = polys[~shapely.is_empty(polys)]
     if len(polys) == 0:
         raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
-    return _validated(*_flat(polys), name, unite)
+    return _validated(*_arrays(polys), name, unite)
 
 
 #: constant arrays of the single-polygon call
