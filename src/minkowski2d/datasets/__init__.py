@@ -1,7 +1,7 @@
 """Built-in data: the ESICUP 2-D irregular nesting instances (CC0), as
 :func:`~minkowski2d.read_esicup` reads them.
 
-The 26 instances of the EURO Special Interest Group on Cutting and Packing collection
+The 25 instances of the EURO Special Interest Group on Cutting and Packing collection
 (albano, blaz, dagli, dighe1-2, fu, gardeyn0-9, jakobs1-2, mao, marques, shapes0-1,
 shirts, swim, trousers) ship with the package; their source, licence and the original
 papers are in ``datasets/esicup/README.md``.
