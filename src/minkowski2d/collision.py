@@ -30,7 +30,6 @@ Many pairs go through :func:`intersects_many`, :func:`distance_many` and
 
 from __future__ import annotations
 
-from fractions import Fraction
 from functools import partial
 from typing import Any, NamedTuple
 
@@ -157,15 +156,7 @@ def _pair(a: Any, b: Any, mode: int, hull: bool) -> tuple[bool, np.ndarray]:
             return bool(hit), row[0]
         if code != _OUT_OF_RANGE:
             _raise(int(code), ("a", "b")[which], int(v))
-    return _py_pair(_exact_list(da), _exact_list(db), mode)
-
-
-def _exact_list(data: Any) -> list:
-    rows = data.tolist() if isinstance(data, np.ndarray) else data
-    out = []
-    for x, y in rows:
-        out.append((Fraction(x) if type(x) is float else x, Fraction(y) if type(y) is float else y))
-    return out
+    return _py_pair(D.exact_rows(da), D.exact_rows(db), mode)
 
 
 # --------------------------------------------------------------------------------------
@@ -346,7 +337,7 @@ def contains(poly: ArrayLike2, points: Any, *, hull: bool = False) -> Any:
             return bool(out[0]) if one else out
         if code != _OUT_OF_RANGE:
             _raise(int(code), ("poly", "points")[which], int(v))
-    res = _py_contains(_exact_list(dp), _exact_list(dq))
+    res = _py_contains(D.exact_rows(dp), D.exact_rows(dq))
     return bool(res[0]) if one else np.array(res, dtype=np.bool_)
 
 
@@ -386,7 +377,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
         for q in range(P):
             a = RA[q if many_a else 0]
             b = RB[q if many_b else 0]
-            h, row = _py_pair(_exact_list(a), _exact_list(b), mode)
+            h, row = _py_pair(D.exact_rows(a), D.exact_rows(b), mode)
             hit[q] = h
             res[q] = row
         return hit.astype(bool), res

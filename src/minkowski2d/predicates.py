@@ -26,13 +26,12 @@ Examples
 
 from __future__ import annotations
 
-import math
-from fractions import Fraction
 from typing import Any
 
 import numpy as np
 
 from ._engine import core
+from ._engine import dispatch as D
 from .errors import NonFiniteError, ShapeError
 
 __all__ = ["orient", "cross_sign", "orient_array", "ERRBOUND", "MINBOUND"]
@@ -46,61 +45,26 @@ MINBOUND = core.MINBOUND
 
 _INT_LIMIT = core.INT_LIMIT  # the core's int64 predicate
 _F64_EXACT_INT = core.FLOAT_EXACT_INT  # ints up to this convert to float64 exactly
-# float types whose conversion to a Python float is exact
-_FLOATS = (float, np.float64, np.float32, np.float16)
-
-
-def _kind(v: Any) -> int:
-    """0: an int with |v| <= 2**53 (the core's int predicate takes it, and it converts to
-    float64 exactly); 1: a float the core takes; 2: an int with 2**53 < |v| < 2**62 (the
-    core's int predicate only); 3: anything else (exact Python)."""
-    if isinstance(v, _FLOATS):
-        return 1
-    if isinstance(v, (int, np.integer)):
-        a = abs(int(v))
-        if a <= _F64_EXACT_INT:
-            return 0  # both an int the core takes and an exact float
-        return 2 if a < _INT_LIMIT else 3
-    return 3
-
-
-def _nonfinite(name: str, v: Any) -> NonFiniteError:
-    return NonFiniteError(
-        f"{name}: non-finite coordinate ({v!r})",
-        argument=name,
-        hint="coordinates must be finite numbers",
-    )
-
-
-def _exact(v: Any, name: str) -> Any:
-    """An exact rational stand-in for v: floats become Fractions (exactly), ints and
-    Fractions stay as they are."""
-    if isinstance(v, (float, np.floating)):
-        if not (math.isfinite(v) if isinstance(v, float) else np.isfinite(v)):
-            raise _nonfinite(name, v)
-        return Fraction(*v.as_integer_ratio())
-    if isinstance(v, np.integer):
-        return int(v)
-    return v
 
 
 def _cross(pts: tuple[Any, ...], names: tuple[str, ...]) -> int:
-    """Exact sign of (pts[1] - pts[0]) x (pts[3] - pts[2])."""
-    vals = [c for p in pts for c in (p[0], p[1])]
-    kinds = [_kind(v) for v in vals]
-    if 1 in kinds:
-        for i, v in enumerate(vals):
-            if kinds[i] == 1 and not math.isfinite(v):
-                raise _nonfinite(names[i // 2], v)
-    top = max(kinds)
-    if top == 0:  # ints, |x| <= 2**53
-        return core.cross_sign_i(*(int(v) for v in vals))
-    if top == 1:  # floats, and ints that convert exactly
-        return core.cross_sign_f(*(float(v) for v in vals))
-    if top == 2 and 1 not in kinds:  # ints, |x| < 2**62
-        return core.cross_sign_i(*(int(v) for v in vals))
-    # large ints next to floats, ints beyond 2**62, Fractions, other exact numbers
-    e = [_exact(v, names[i // 2]) for i, v in enumerate(vals)]
+    """Exact sign of (pts[1] - pts[0]) x (pts[3] - pts[2]), on the path the dispatcher
+    chooses for the four points (the one router: core int64, core float64, or exact)."""
+    try:
+        op = D.operand(list(pts), "point")
+    except NonFiniteError as exc:
+        k = exc.vertex if isinstance(exc.vertex, int) and 0 <= exc.vertex < len(pts) else 0
+        raise NonFiniteError(
+            f"{names[k]}: non-finite coordinate ({pts[k]!r})",
+            argument=names[k],
+            hint="coordinates must be finite numbers",
+        ) from None
+    if op.path == "i":
+        return core.cross_sign_i(*op.data.ravel().tolist())
+    if op.path == "f":
+        return core.cross_sign_f(*op.data.ravel().tolist())
+    # ints beyond 2**62, large ints next to floats, Fractions: exact Python
+    e = [c for p in D.exact_list(op) for c in p]
     d = (e[2] - e[0]) * (e[7] - e[5]) - (e[3] - e[1]) * (e[6] - e[4])
     return (d > 0) - (d < 0)
 

@@ -42,6 +42,20 @@ _FLOAT_TYPES = (float, np.floating)
 _INT_TYPES = (int, np.integer)
 
 
+def fits_float64(v: int) -> bool:
+    """Whether the int ``v`` converts to float64 exactly: at most 53 significant bits
+    (trailing zeros do not count) and below the float range. Every ``|v| <= 2**53``
+    does (``core.FLOAT_EXACT_INT``, the fast bound the kernels use); ``2**60`` does too.
+
+    >>> fits_float64(2**53 + 1), fits_float64(2**60), fits_float64(-(2**53 - 1) << 900)
+    (False, True, True)
+    """
+    if -_F53 <= v <= _F53:
+        return True
+    m = abs(v)
+    return (m >> ((m & -m).bit_length() - 1)).bit_length() <= 53 and m.bit_length() <= 1024
+
+
 def to_float(v: Any) -> float:
     """The nearest float to an exact number; ``inf`` (with the sign) when it is beyond
     the float range (``float()`` raises OverflowError there)."""
@@ -139,7 +153,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
 
     Raises the specific :mod:`minkowski2d.errors` exception otherwise.
     """
-    out = []
+    out: list[tuple[Any, Any]] = []
     kinds = set()
     big_int = False
     append = out.append

@@ -123,21 +123,21 @@ def _out_kind(*kinds: str) -> str:
     return "int"
 
 
+def exact_rows(data: Any) -> list:
+    """(n, 2) rows (an ndarray or a list of pairs) as a list of exact tuples: ints stay
+    ints, floats become Fractions (exactly), Fractions stay."""
+    rows = data.tolist() if isinstance(data, np.ndarray) else data
+    return [
+        (Fraction(x) if isinstance(x, float) else x, Fraction(y) if isinstance(y, float) else y)
+        for x, y in rows
+    ]
+
+
 def exact_list(op: Operand) -> list:
     """The operand as a list of exact tuples (ints stay ints, floats become Fractions)."""
-    if op.path == "py":
-        data = op.data
-    else:
-        data = [tuple(r) for r in op.data.tolist()]
     if op.kind in (FLOAT, XFLOAT, EXACT) or op.path == "f":
-        return [
-            (
-                Fraction(x) if isinstance(x, float) else x,
-                Fraction(y) if isinstance(y, float) else y,
-            )
-            for x, y in data
-        ]
-    return data
+        return exact_rows(op.data)
+    return op.data if op.path == "py" else [tuple(r) for r in op.data.tolist()]
 
 
 def unify(A: Operand, B: Operand) -> tuple[Any, Any, str, str]:

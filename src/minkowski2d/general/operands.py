@@ -11,7 +11,7 @@ import numpy as np
 
 from .._engine import core
 from .._engine import options as _options
-from .._engine.coerce import as_array, is_shapely, to_float
+from .._engine.coerce import as_array, fits_float64, is_shapely, to_float
 from ..batch import Ragged
 from ..errors import (
     EmptyGeometryError,
@@ -107,10 +107,11 @@ def _int_coords(arr: np.ndarray, name: str) -> np.ndarray:
 
 
 def _check_int(v: int, name: str, vertex: int) -> None:
-    if abs(v) >= _EXACT_INT and (v >> ((v & -v).bit_length() - 1)).bit_length() > 53:
+    if not fits_float64(v):
         raise GeometryError(
             f"{name}: vertex {vertex} has the integer coordinate {v}, which float64 "
-            "cannot hold exactly (more than 53 significant bits); the general routines "
+            "cannot hold exactly (more than 53 significant bits, or beyond its range); the "
+            "general routines "
             "compute in float64 and would round it",
             argument=name,
             vertex=vertex,
