@@ -5,6 +5,7 @@ files), plus property tests where a class is open-ended."""
 from __future__ import annotations
 
 import math
+import warnings
 from fractions import Fraction
 
 import numpy as np
@@ -716,3 +717,34 @@ def test_junk_arguments_are_geometry_errors(name):
             except GeometryError:
                 continue
         assert not any(junk is j for j in NEVER_VALID), (name, junk)
+
+
+def _readers():
+    import shapely
+
+    box = shapely.box(0, 0, 1, 1)
+    sq = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    return {
+        "minkowski_sum": lambda e: mk.minkowski_sum(e, sq),
+        "intersects": lambda e: mk.intersects(e, sq),
+        "minkowski_sum_general": lambda e: mk.minkowski_sum_general(e, sq),
+        "offset": lambda e: mk.offset(e, 1.0),
+        "MotionPlanner": lambda e: mk.MotionPlanner([e]),
+        "no_fit_polygons": lambda e: mk.no_fit_polygons([e, box]),
+        "minkowski_difference": lambda e: mk.minkowski_difference(sq, e),
+    }
+
+
+@pytest.mark.parametrize("reader", sorted(_readers()))
+def test_one_fault_one_error_across_the_readers(reader):
+    # every polygon reader names the same fault with the same exception
+    import shapely
+
+    call = _readers()[reader]
+    with pytest.raises(mk.errors.EmptyGeometryError, match="empty"):
+        call(shapely.Polygon())
+    with warnings.catch_warnings():  # shapely warns when it builds a ring with a NaN
+        warnings.simplefilter("ignore", RuntimeWarning)
+        nan = shapely.Polygon([(0, 0), (1, 0), (float("nan"), 1)])
+    with pytest.raises(mk.errors.NonFiniteError, match="non-finite coordinate"):
+        call(nan)

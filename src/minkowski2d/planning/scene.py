@@ -56,7 +56,7 @@ def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
             return out, "float"
         if gt == "Polygon":
             if obj.is_empty:
-                raise ShapeError(f"{name}: empty polygon", argument=name)
+                raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
             if len(obj.interiors):
                 return _triangulate(obj, name), "float"
             import shapely
