@@ -5,7 +5,6 @@ degenerate cases and errors."""
 from __future__ import annotations
 
 from fractions import Fraction
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -17,12 +16,11 @@ import minkowski2d as mk
 from minkowski2d.errors import EmptyGeometryError, SelfIntersectionError, ShapeError
 
 from . import oracle
+from .corpus import CORPUS, requires_corpus
 from .strategies import convex_int
 
-DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "cgal-minkowski"
-needs_data = pytest.mark.skipif(
-    not DATA.is_dir(), reason=f"CGAL test polygons not found at {DATA} (../shared beside the repo)"
-)
+DATA = CORPUS
+needs_data = requires_corpus
 
 # the pairs CGAL's own .cmd files test together (those whose files exist), plus the
 # star pair of the older cmd file

@@ -32,7 +32,6 @@ CLASSIC = [
 ]  # fmt: skip
 REL = 1e-9
 
-needs_data = pytest.mark.skipif(not DATA.exists(), reason=f"ESICUP data not found at {DATA}")
 
 
 def instance(name: str) -> dict:
@@ -68,7 +67,6 @@ def oriented(part, angle):
 # every classic instance against the oracle (sample) and CGAL (all)
 
 
-@needs_data
 @pytest.mark.parametrize("name", CLASSIC)
 def test_classic_sample_against_oracle(name):
     d = instance(name)
@@ -103,7 +101,6 @@ def _cgal_areas(rings: list, pairs: list) -> list:
     ]
 
 
-@needs_data
 @pytest.mark.skipif(
     not DRIVER.exists(),
     reason="CGAL driver not built (python benchmarks/bench_nfp.py builds build/cgal_nfp_driver "
@@ -131,7 +128,6 @@ def test_every_classic_nfp_against_cgal():
     assert total == 27724
 
 
-@needs_data
 def test_degenerate_placements_on_instances_are_feasible():
     found = 0
     for name in ("dighe2", "shapes0"):
@@ -253,7 +249,6 @@ def test_degenerate_placements_are_feasible_and_nothing_else():
         assert A.intersection(shapely.affinity.translate(B, dx, dy)).area > 0
 
 
-@needs_data
 def test_inner_fit_polygons_in_the_strip_are_exact():
     for name in CLASSIC:
         d = instance(name)
@@ -340,7 +335,6 @@ def test_general_many_large_parts():
         assert same_set(g, ref)
 
 
-@needs_data
 def test_auto_switches_to_the_convolution_on_curved_parts(monkeypatch):
     import minkowski2d.general.sums as general
 
@@ -358,7 +352,6 @@ def test_auto_switches_to_the_convolution_on_curved_parts(monkeypatch):
 # CLI and distribution
 
 
-@needs_data
 @pytest.mark.parametrize("fmt", ["json", "geojson"])
 def test_cli_nfp(tmp_path, fmt):
     out = tmp_path / f"out.{fmt}"
@@ -395,7 +388,6 @@ def _nfp_block(parts, rotations, block):
     return mk_.no_fit_polygons(parts, rotations=rotations, pairs=block)
 
 
-@needs_data
 def test_dask_recipe_on_a_local_cluster():
     distributed = pytest.importorskip("distributed", reason="dask[distributed] is not installed")
     d = instance("dagli")

@@ -23,8 +23,6 @@ from minkowski2d.nesting.nfp import rotate_part
 from . import nesting_oracle as O
 from .corpus import ESICUP
 
-needs_esicup = pytest.mark.skipif(not ESICUP.is_dir(), reason="../shared/data/esicup missing")
-
 
 def oracle(lay) -> set:
     """The oracle's violations of a layout (empty: certified independently)."""
@@ -143,7 +141,6 @@ def test_progress_and_callback_see_each_improvement():
     assert lay.density >= (dens[-1] if dens else 0) - 1e-12
 
 
-@needs_esicup
 @pytest.mark.parametrize("name", ["fu", "shapes0", "dighe2"])
 def test_esicup_instances_give_certified_layouts(name):
     inst = mk.read_esicup(ESICUP / f"{name}.json")

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -22,7 +21,9 @@ from hypothesis import strategies as st
 import minkowski2d as mk
 from minkowski2d.errors import GeometryError, SelfIntersectionError
 
-DATA = Path(__file__).resolve().parents[2] / "shared" / "data" / "cgal-minkowski"
+from .corpus import CORPUS
+
+DATA = CORPUS
 
 
 # --------------------------------------------------------------------------------------
@@ -354,7 +355,7 @@ def _cgal(name):
 
     p = DATA / f"{name}.dat"
     if not p.exists():
-        pytest.skip(f"{p} not available")
+        pytest.skip(f"CGAL corpus missing: {p} not available")
     return read_cgal_dat(p)[0]
 
 
