@@ -33,7 +33,6 @@ CLASSIC = [
 REL = 1e-9
 
 
-
 def instance(name: str) -> dict:
     return mk.read_esicup(DATA / f"{name}.json")
 
