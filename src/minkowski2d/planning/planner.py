@@ -353,6 +353,7 @@ class MotionPlanner(_Queries):
         x0, y0 = allw[:, 0].min().item(), allw[:, 1].min().item()
         x1, y1 = allw[:, 0].max().item(), allw[:, 1].max().item()
         m = max(x1 - x0, y1 - y0, 1)  # Python numbers: an overflow is inf, checked below
+        f: list[float]  # ints for an int workspace
         if wkind == "int":
             m = int(m)
             f = [int(x0) - m, int(y0) - m, int(x1) + m, int(y1) + m]

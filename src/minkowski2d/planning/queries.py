@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,10 +22,32 @@ from .scene import (
     _union_shapes,
 )
 
+if TYPE_CHECKING:
+    from ..batch import Ragged
+    from .planner import MotionPlanner
+
 
 class _Queries:
     """The queries of a :class:`MotionPlanner` (paths, points, the free space, drawing),
     kept apart from its construction (planner.py)."""
+
+    if TYPE_CHECKING:  # set and defined by MotionPlanner (planner.py)
+        kind: str
+        n_obstacles: int
+        pieces: Ragged
+        groups: np.ndarray
+        box: list[Any] | None
+        _obstacle_pieces: list[list[np.ndarray]]
+        _grid_box: Any
+        _mesh_box: Any
+        _core: Any
+        _twin: Any
+        _graph: Any
+
+        def _make_graph(self, kind: str) -> Any: ...
+        def _make_mesh(self, kind: str, cover: Any = None) -> Any: ...
+        def _float_twin(self) -> Any: ...
+        def _for_robot(self, robot: Any) -> MotionPlanner: ...
 
     def _in_grid(self, pts: list[tuple]) -> np.ndarray:
         b = self._grid_box
