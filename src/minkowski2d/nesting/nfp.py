@@ -298,7 +298,7 @@ def no_fit_polygons(
         pairs = [(i, j) for i in range(n) for j in range(n)]
     else:
         pairs = _options.sequence(pairs, "pairs", "an iterable of (i, j) part-index pairs")
-    keys = []
+    keys: list[tuple[int, Any, int, Any]] = []  # (part, rotation, part, rotation)
     missing = {i for i, p in enumerate(parts) if p is None}
     for k, pr in enumerate(pairs):
         i, j = _pair_index(pr, k, n)
@@ -354,7 +354,7 @@ def _plan_jobs(parts: list, rot: list, todo: list) -> tuple[list, list, dict]:
             else:
                 job, turn = c1, qi
             a_key, b_key = (job[0], job[1]), (job[2], (job[3] + 2) % 4)
-            jk = ("q", a_key, b_key)
+            jk: tuple = ("q", a_key, b_key)
             if jk not in jobs:
                 jobs[jk] = len(job_list)
                 job_list.append((part_at(job[0], 90 * job[1]), part_at(job[2], 90 * b_key[1])))
@@ -494,7 +494,9 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
         np.ascontiguousarray(RB.coords, np.float64),
         np.asarray(RB.offsets, np.int64),
     )
-    out = [shapely.LineString(lines[off[k] : off[k + 1]]) for k in range(len(off) - 1)]
+    out: list[shapely.Geometry] = [
+        shapely.LineString(lines[off[k] : off[k + 1]]) for k in range(len(off) - 1)
+    ]
     out += [shapely.Point(p) for p in points.tolist()]
     if not out:
         return shapely.GeometryCollection()
@@ -699,7 +701,7 @@ def _instance_from_features(fc: Mapping, name: str) -> dict:
         rings = g["coordinates"]
         if not rings or not all(isinstance(r, list) and r for r in rings):
             raise InputFormatError(f"{where}: a Polygon without rings", argument=where)
-        props = f.get("properties") if isinstance(f.get("properties"), Mapping) else {}
+        props = p if isinstance(p := f.get("properties"), Mapping) else {}
         pieces.append(
             {
                 "id": props.get("id", f.get("id", k)),

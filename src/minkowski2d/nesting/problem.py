@@ -68,8 +68,9 @@ class Problem:
     ot_of: dict = field(default_factory=dict)
     ot_part: list = field(default_factory=list)  # part index or -1 (obstacle)
     ot_angle: list = field(default_factory=list)
-    box: np.ndarray | None = None  # (n_ot, 4) of the part itself (container test)
-    area: np.ndarray | None = None
+    # (n_ot, 4) of the part itself (container test); both set by build_problem
+    box: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
+    area: np.ndarray = field(default_factory=lambda: np.zeros(0))
     items: list = field(default_factory=list)  # (part, copy)
     fixed_items: dict = field(default_factory=dict)  # item -> (bin, ot, x, y)
     obstacle_items: list = field(default_factory=list)  # (bin, ot)
@@ -352,7 +353,7 @@ def _same_angle(a: Any, b: Any) -> bool:
     return Fraction(a) % 360 == Fraction(b) % 360
 
 
-def _nfp_table(pb: Problem, n_part_ot: int, obstacles: list, threads: int) -> list:
+def _nfp_table(pb: Problem, n_part_ot: int, obstacles: list, threads: int) -> NfpTable:
     """Rings of NFP(a fixed, b moving) for every oriented shape a and part orientation b
     (entry a * n_ot + b); empty for pairs the search never asks for."""
     n_ot = len(pb.ot_part)
@@ -369,10 +370,11 @@ def _nfp_table(pb: Problem, n_part_ot: int, obstacles: list, threads: int) -> li
             hint=(exc.hint or "") + " (while computing the no-fit polygons of the parts)"
         ) from exc
     table = np.empty(n_ot * n_ot, dtype=object)
-    ot_key = {}
+    ot_key: dict[int, tuple[int, Any]] = {}  # (part, angle) of a part's oriented shape
     for ot in range(n_ot):
         i = pb.ot_part[ot]
-        ot_key[ot] = (i, pb.ot_angle[ot]) if i >= 0 else None
+        if i >= 0:
+            ot_key[ot] = (i, pb.ot_angle[ot])
     z_of = {}
     for z, (_, ot) in enumerate(pb.obstacle_items):
         z_of[ot] = z

@@ -52,7 +52,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, cast
 
 import numpy as np
 
@@ -236,7 +236,7 @@ class _Geo:
         self.ring = np.repeat(np.arange(len(rstart)), np.diff(self.rstart))
         self.roff = np.searchsorted(self.owner[self.rstart[:-1]], np.arange(self.n + 2))
         self.finite = np.isfinite(self.hi).all(axis=1)
-        self.big = ~(np.abs(self.hi) <= _CAP).all(axis=1)
+        self.big = ~cast(np.ndarray, (np.abs(self.hi) <= _CAP).all(axis=1))
         self.vlo = np.nextafter(self.hi, -np.inf)
         self.vhi = np.nextafter(self.hi, np.inf)
         self.off = np.searchsorted(self.owner, np.arange(self.n + 2))
@@ -430,7 +430,7 @@ def _classify(g: _Geo, ea: np.ndarray, eb: np.ndarray) -> tuple[dict, dict]:
     a0, a1, b0, b1 = ea, g.nxt[ea], eb, g.nxt[eb]
     o1, o2 = g.orient(a0, a1, b0), g.orient(a0, a1, b1)
     o3, o4 = g.orient(b0, b1, a0), g.orient(b0, b1, a1)
-    found: dict[tuple[int, int], str] = {}
+    found: dict[tuple[int, int], tuple[str, Any]] = {}  # (why, an exact point)
     cross = np.flatnonzero((o1 * o2 < 0) & (o3 * o4 < 0))
     col = np.flatnonzero((o1 == 0) & (o2 == 0))
     overlap, same = _shared_same(g, a0[col], a1[col], b0[col], b1[col])
@@ -573,7 +573,7 @@ def _too_close(g: _Geo, ea: np.ndarray, eb: np.ndarray, s: Fraction) -> np.ndarr
     a = np.concatenate([ea, na, eb, nb])
     b = np.concatenate([eb, eb, ea, ea])
     c = np.concatenate([nb, nb, na, na])
-    far = g.point_seg(a, b, c, s).reshape(4, -1).all(axis=0)
+    far = cast(np.ndarray, g.point_seg(a, b, c, s).reshape(4, -1).all(axis=0))
     return ~far
 
 
