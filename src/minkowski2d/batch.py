@@ -121,9 +121,9 @@ class Ragged:
                 f"{name}: expected a sequence of polygons, got {type(polygons).__name__}",
                 argument=name,
             )
-        arrs = []
+        arrs: list[np.ndarray] = []
         for k, p in enumerate(polygons):
-            a = (
+            a: np.ndarray | None = (
                 p
                 if type(p) is np.ndarray
                 and p.ndim == 2
@@ -132,12 +132,13 @@ class Ragged:
                 else None
             )
             if a is None or a.shape[1] != 2 or a.shape[0] == 0:
-                a, kind = as_array(p, f"{name}[{k}]")
-                if isinstance(a, list):
+                got, kind = as_array(p, f"{name}[{k}]")
+                if isinstance(got, list):
                     raise ShapeError(
                         f"{name}[{k}]: coordinates need exact Python numbers; "
                         "use the single-pair minkowski_sum for these"
                     )
+                a = got
             arrs.append(a)
         if not arrs:
             return cls(np.empty((0, 2), np.int64), np.zeros(1, np.int64))
@@ -277,10 +278,11 @@ class Ragged:
             return (
                 _from_buffers,
                 (
-                    pickle.PickleBuffer(coords),
+                    # ndarray is a buffer; numpy's stubs say so for Python >= 3.12 only
+                    pickle.PickleBuffer(coords),  # type: ignore[arg-type]
                     coords.dtype.str,
                     len(coords),
-                    pickle.PickleBuffer(offsets),
+                    pickle.PickleBuffer(offsets),  # type: ignore[arg-type]
                 ),
             )
         return (_from_arrays, (coords, offsets))
@@ -386,6 +388,7 @@ class Ragged:
                 continue
             rows = sel[idx]
             sub_idx = np.cumsum(sel)[idx[rows]] - 1
+            g: shapely.Geometry | np.ndarray
             if make == "poly":
                 g = shapely.polygons(shapely.linearrings(coords[rows], indices=sub_idx))
             elif make == "line":

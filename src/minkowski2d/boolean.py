@@ -28,7 +28,7 @@ Examples
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -153,7 +153,7 @@ def _polygonal(obj: Any, name: str) -> Any:
 def _multi(geoms: list) -> Any:
     import shapely
 
-    polys = []
+    polys: list[Any] = []  # shapely Polygons
     for g in geoms:
         polys.extend(shapely.get_parts(g).tolist() if g.geom_type == "MultiPolygon" else [g])
     polys = [p for p in polys if not p.is_empty]
@@ -220,7 +220,7 @@ def _members(obj: Any, name: str) -> tuple[Any, np.ndarray | None]:
     import shapely
 
     geoms = box.geoms.copy()
-    null = np.equal(geoms, None)
+    null = np.equal(geoms, None)  # type: ignore[call-overload]  # numpy's stubs take no None
     for k in np.flatnonzero(~null):
         g = geoms[k]
         if g.geom_type not in _POLYGONAL:
@@ -271,7 +271,7 @@ def _boxed(out: np.ndarray, box: Any, *boxes: Any) -> Any:
 
     for bx in boxes:
         if bx is not None:
-            out[np.equal(bx.geoms, None)] = None
+            out[np.equal(bx.geoms, None)] = None  # type: ignore[call-overload]  # as above
     return _wrap_geoms(out, box)
 
 
@@ -417,7 +417,7 @@ def union_all(geoms: Any, *, fill_rule: str | None = None) -> Any:
         else:
             members = np.array([_polygonal(geoms, "geoms")], dtype=object)
     # every member's polygons in one task, each member named in an error
-    A = _Arrays(members)
+    A = _Arrays(cast(np.ndarray, members))  # built above, or by _members with a box
     per_member = A.to.copy()
     A.to = np.array([0, per_member[-1]], np.int64)
     B = _Arrays(np.empty(0, dtype=object))
@@ -479,7 +479,7 @@ def _lineal(obj: Any, name: str) -> Any:
 def _multiline(parts: list) -> Any:
     import shapely
 
-    lines = []
+    lines: list[Any] = []  # shapely LineStrings
     for g in parts:
         lines.extend(shapely.get_parts(g).tolist() if g.geom_type == "MultiLineString" else [g])
     lines = [g for g in lines if not g.is_empty]
@@ -493,6 +493,7 @@ def _line_arrays(geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]
     if T == 0 or bool(shapely.is_empty(geoms).all()):
         return np.empty((0, 2)), np.zeros(1, np.int64), np.zeros(T + 1, np.int64)
     typ, coords, offs = shapely.to_ragged_array(geoms)
+    mo: np.ndarray
     if typ == shapely.GeometryType.LINESTRING:
         (lo,) = offs
         mo = np.arange(T + 1)
@@ -557,7 +558,7 @@ def clip_lines(
     box = box_l if box_l is not None else box_p
     if box_l is not None:
         gl = box_l.geoms.copy()
-        null = np.equal(gl, None)
+        null = np.equal(gl, None)  # type: ignore[call-overload]  # numpy's stubs take no None
         for k in np.flatnonzero(~null):
             gl[k] = _lineal(gl[k], f"lines[{box_l.label(int(k))}]")
         gl[null] = shapely.LineString()

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -338,7 +338,8 @@ def _explain(
 def _log_line(s: MergeStep) -> str:
     names = " + ".join(f"{'a' if src == 'A' else 'b'}{k}" for src, k in s.taken)
     if s.reason == "cross":
-        rel = " > 0" if s.cross > 0 else " < 0" if s.cross < 0 else ", parallel"
+        c = cast(int, s.cross)  # set for every "cross" step
+        rel = " > 0" if c > 0 else " < 0" if c < 0 else ", parallel"
         how = f"a{s.i} × b{s.j} = {format_number(s.cross_value)}{rel}"
     elif s.reason == "half-plane":
         how = "half-planes differ"
@@ -442,6 +443,8 @@ def merge_trace(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> MergeTra
         value = _cross_value(qa, ri, qb, rj) if reason == "cross" else None
         before = out[k]
         after = out[(k + 1) % n]
+        path: tuple
+        taken: tuple[tuple[str, int], ...]
         if src == "AB":
             a1 = qa[(i + 1) % na]
             b0 = qb[j % nb]

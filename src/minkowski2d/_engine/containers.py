@@ -41,7 +41,7 @@ from __future__ import annotations
 import re
 import sys
 from collections.abc import Callable, Sequence
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, cast
 
 import numpy as np
 
@@ -103,7 +103,8 @@ def boxed(x: Any) -> bool:
         import shapely
 
         flat = x.ravel()
-        return bool((shapely.is_geometry(flat) | np.equal(flat, None)).all())
+        is_none = np.equal(flat, None)  # type: ignore[call-overload]  # numpy's stubs take no None
+        return bool((shapely.is_geometry(flat) | is_none).all())
     return _geopandas_kind(x) is not None
 
 
@@ -233,7 +234,7 @@ def _run(
     nchunks = max(1, min(CHUNKS, total))
     bounds = np.linspace(0, total, nchunks + 1).astype(np.int64)
     report = Progress(progress, total)
-    parts = []
+    parts: list[Any] = []  # compute's result per chunk
     try:
         for lo, hi in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
             if hi == lo and parts:
@@ -335,7 +336,7 @@ def apply(
     empty = np.zeros(n, bool)
     for b in boxes_:
         if b is not None:
-            isnull = np.equal(b.geoms, None)
+            isnull = np.equal(b.geoms, None)  # type: ignore[call-overload]  # numpy: no None
             null |= isnull
             empty |= ~isnull & shapely.is_empty(b.geoms)
     empty &= ~null
@@ -421,7 +422,7 @@ def _box(value: Any, box: Box, valid: np.ndarray, null: np.ndarray, empty: np.nd
             if name.startswith("point") and isinstance(v, np.ndarray) and v.ndim == 2:
                 import shapely
 
-                pts = shapely.points(v) if len(v) else np.empty(0, dtype=object)
+                pts = cast(np.ndarray, shapely.points(v)) if len(v) else np.empty(0, dtype=object)
                 fields.append(_scatter_geoms(pts, box, valid, np.zeros_like(empty)))
             else:
                 fields.append(_box(v, box, valid, null, empty))

@@ -16,6 +16,7 @@ and ``*_f`` (float64, filtered then exact).
 from __future__ import annotations
 
 import enum
+from typing import TYPE_CHECKING
 
 from .._core import _ext
 from .._core._ext import (  # the kernels: the whole surface between Python and C++
@@ -132,8 +133,24 @@ class Status(enum.IntEnum):
     INVALID_POLYGON = _ext.INVALID_POLYGON
 
 
-#: Why a polygon is invalid (``Status.INVALID_POLYGON``); defined once, in exact.hpp.
-Invalid = enum.IntEnum("Invalid", dict(_ext.INVALID_REASONS))  # type: ignore[misc]
+if TYPE_CHECKING:  # the members for type checkers; the names and values are the core's
+
+    class Invalid(enum.IntEnum):
+        RING_FEW_VERTICES = enum.auto()
+        RING_NO_AREA = enum.auto()
+        RING_SPIKE = enum.auto()
+        RING_CROSSES = enum.auto()
+        RING_OVERLAPS = enum.auto()
+        RING_TOUCHES = enum.auto()
+        RINGS_CROSS = enum.auto()
+        RINGS_OVERLAP = enum.auto()
+        HOLE_OUTSIDE = enum.auto()
+        HOLE_IN_HOLE = enum.auto()
+        POLYGONS_OVERLAP = enum.auto()
+
+else:
+    #: Why a polygon is invalid (``Status.INVALID_POLYGON``); defined once, in exact.hpp.
+    Invalid = enum.IntEnum("Invalid", dict(_ext.INVALID_REASONS))
 
 #: The collision walk's queries (collision.hpp).
 COLL_INTERSECTS: int = _ext.COLL_INTERSECTS

@@ -128,7 +128,7 @@ def _py_subedges(A: list, sa: int, B: list, sb: int) -> list:
     return out
 
 
-def _py_feature(A: list, B: list, f: tuple) -> tuple:
+def _py_feature(A: list, B: list, f: tuple) -> tuple[tuple, tuple, tuple]:
     kind, i, j = f
     if kind == 0:
         return A[i], A[(i + 1) % len(A)], B[j]

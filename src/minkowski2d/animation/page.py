@@ -261,11 +261,11 @@ def _edge_marks(P: list, size: float, prefix: str, px: int) -> list:
     for k in range(n):
         p = P[k]
         q = P[(k + 1) % n]
-        px, py, qx, qy = float(p[0]), float(p[1]), float(q[0]), float(q[1])
-        dx, dy = qx - px, qy - py
+        ax, ay, qx, qy = float(p[0]), float(p[1]), float(q[0]), float(q[1])
+        dx, dy = qx - ax, qy - ay
         ln = math.hypot(dx, dy) or 1.0
         off = 0.05 * size
-        lab = ((px + qx) / 2 + dy / ln * off, (py + qy) / 2 - dx / ln * off)
+        lab = ((ax + qx) / 2 + dy / ln * off, (ay + qy) / 2 - dx / ln * off)
         out.append(
             {
                 "from": _json_point(p),

@@ -133,7 +133,9 @@ class _Handler(BaseHTTPRequestHandler):
     protocol_version = "HTTP/1.1"
 
     def setup(self) -> None:
-        self.timeout = self.server.timeout_s  # every read and write on the socket
+        # every read and write on the socket (typeshed calls timeout a ClassVar; setup()
+        # reads it from the instance)
+        self.timeout = self.server.timeout_s  # type: ignore[misc]
         super().setup()
 
     def log_message(self, format: str, *args: Any) -> None:  # noqa: A002
@@ -208,7 +210,7 @@ class _Handler(BaseHTTPRequestHandler):
             self._error(HTTPStatus.OK, exc)
             return
         except (ValueError, TypeError, ArithmeticError, RecursionError) as exc:
-            err = InputFormatError(f"cannot use this input: {exc}")
+            err: Exception = InputFormatError(f"cannot use this input: {exc}")
             self._error(HTTPStatus.OK, err)
             return
         except Exception as exc:  # a bug: still answer, and keep the traceback in the log
@@ -389,7 +391,8 @@ class AnimationServer(ThreadingHTTPServer):
         return f"http://{HOST}:{self.server_address[1]}/"
 
     def page(self) -> str:
-        return render(None, None, data=self._data, editable=True, api="/api/trace")
+        # with data=, render does not read a and b
+        return render(None, None, data=self._data, editable=True, api="/api/trace")  # type: ignore[arg-type]
 
     def start_thread(self) -> threading.Thread:
         """Serve from a daemon thread (for tests and notebooks); stop with ``shutdown()``."""

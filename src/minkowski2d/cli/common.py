@@ -191,7 +191,9 @@ def output_format(args: argparse.Namespace, formats: Iterable[str] | None = None
     if getattr(args, "format", None):
         return args.format
     if formats is None:
-        from ..io import FORMATS as formats
+        from ..io import FORMATS
+
+        formats = FORMATS
     suffix = Path(args.output).suffix.lower() if args.output else ""
     return suffix[1:] if suffix[1:] in formats else "json"
 
@@ -241,7 +243,7 @@ def renamed_error(
         hint = hull_hint
     else:
         hint_in_message = False
-    if names and exc.argument in names:
+    if names and exc.argument is not None and exc.argument in names:
         return exc.renamed(names[exc.argument], hint, hint_in_message)
     if prefix is not None:
         inner = exc.argument

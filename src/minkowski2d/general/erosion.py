@@ -22,6 +22,7 @@ from .operands import (
     _operands,
 )
 from .sums import (
+    _Prepared,
     _status_error,
     _table,
     _Wrapped,
@@ -334,7 +335,7 @@ def _erode_general(A: _Operand, B: _Operand) -> Any:
     computes ``G`` minus the convolution of ``R`` and ``−B`` (holes of R that B cannot
     fit into filled first, see minkowski.hpp)."""
 
-    preps = [_Wrapped(A), _Wrapped(B)]
+    preps: list[_Prepared] = [_Wrapped(A), _Wrapped(B)]
     T = _table(preps, [False, False], "hertel-mehlhorn")
     xy, ro, po, pair_off, status, _ = core.general_sums(
         *T,

@@ -168,7 +168,7 @@ def _sums(
     code = _METHOD_CODE[method]
     want = [method == "decomposition"] * len(preps)
 
-    def call(sel: np.ndarray, code: int) -> tuple:
+    def call(sel: np.ndarray | slice, code: int) -> tuple:
         T = _table(preps, want, decomposition)
         return core.general_sums(
             *T,

@@ -129,7 +129,7 @@ def _svg(geom: Any) -> str:
     vb = f"{x0 - pad} {-(y1 + pad)} {w + 2 * pad} {h + 2 * pad}"
     stroke = 0.01 * max(w, h)
     parts = []
-    polys = [g]
+    polys: list[Any] = [g]  # any shapely geometries, flattened below
     while any(hasattr(p, "geoms") for p in polys):  # collections of multi-parts: flat
         polys = [q for p in polys for q in (p.geoms if hasattr(p, "geoms") else [p])]
     for p in polys:
