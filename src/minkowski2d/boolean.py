@@ -57,12 +57,6 @@ __all__ = [
 #: given (counter-clockwise +1), is nonzero, odd, positive or negative.
 FILL_RULES: tuple[str, ...] = tuple(core.FILL_RULES)
 
-_OPS = {
-    "union": core.OVERLAY_UNION,
-    "difference": core.OVERLAY_DIFFERENCE,
-    "intersection": core.OVERLAY_INTERSECTION,
-    "xor": core.OVERLAY_XOR,
-}
 _NO_LIMIT = core.NO_LIMIT  # a work limit that never stops a run
 _HINT = (
     "repair it (shapely.make_valid) or pass fill_rule='nonzero' or 'evenodd' to resolve "
@@ -232,7 +226,7 @@ def _members(obj: Any, name: str) -> tuple[Any, np.ndarray | None]:
 def _binary(op: str, a: Any, b: Any, fill_rule: Any, threads: int) -> Any:
     fill, validate = _fill(fill_rule)
     threads = _options.threads(threads)
-    rule = _OPS[op] + 4 * fill
+    rule = core.OVERLAY_OPS[op] + 4 * fill
     box_a, ga = _members(a, "a")
     box_b, gb = _members(b, "b")
     box = box_a if box_a is not None else box_b

@@ -23,11 +23,6 @@ from .status import status_error
 
 __all__ = ["overlay", "geometries", "closed_geometries"]
 
-RULES = {
-    "union": core.OVERLAY_UNION,
-    "difference": core.OVERLAY_DIFFERENCE,
-    "intersection": core.OVERLAY_INTERSECTION,
-}
 
 
 def geometries(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, group_off: np.ndarray) -> np.ndarray:
@@ -101,7 +96,8 @@ def overlay(
     off = np.concatenate([[0], np.cumsum([len(a) for a in arrs])]).astype(np.int64)
     w = np.ones(n, np.int64) if weights is None else np.asarray(weights, np.int64)
     ly = np.zeros(n, np.int64) if layers is None else np.asarray(layers, np.int64)
-    out, ro, po, status, _ = core.overlay_rings(xy, np.empty((0, 2)), off, w, ly, RULES[rule])
+    code = core.OVERLAY_OPS[rule]
+    out, ro, po, status, _ = core.overlay_rings(xy, np.empty((0, 2)), off, w, ly, code)
     check(int(status), argument)
     return geometries(out, ro, po, np.array([0, len(po) - 1], np.int64))[0]
 

@@ -9,6 +9,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from .._engine import core
 from .._engine import options as _options
 from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
 from .._engine.coerce import as_array, is_shapely
@@ -31,7 +32,7 @@ APPROX = ("outer", "inner")
 JOINS = ("round", "miter", "square")
 #: The default ``miter_limit`` of :func:`offset` (a multiple of ``|r|``).
 MITER_LIMIT = 2.0
-_JOIN_CODE = {"round": 0, "miter": 1, "square": 2}
+_JOIN_CODE = {"round": core.OFFSET_ROUND, "miter": core.OFFSET_MITER, "square": core.OFFSET_SQUARE}
 
 
 # --------------------------------------------------------------------------------------
@@ -72,8 +73,6 @@ def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
     holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
     by the core before offsetting (``unite``; for a MultiPolygon, found by the same
     check)."""
-    from .._engine import core
-
     verdict = core.check_polygons_f(xy, ring_off, poly_off, False)
     if verdict[0]:
         from .._engine.polygon import Rings, problem_error
@@ -186,7 +185,6 @@ def _read(obj: Any, name: str) -> _Input:
         raise NonFiniteError(
             f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
         )
-    from .._engine import core
     from .._engine.polygon import Invalid, probe, rings_of_array
 
     rings = rings_of_array(data)
@@ -227,8 +225,6 @@ def _run(
     labels: bool = False,
 ) -> tuple:
     """One compiled call for all ``inputs``: the raw result of ``core.offset_rings``."""
-    from .._engine import core
-
     if len(inputs) == 1:
         a = inputs[0]
         xy, ro, hole = a.xy, a.ring_off, a.hole
@@ -266,8 +262,6 @@ def _run(
 
 def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
     """Turn the core's verdict on one polygon into the documented error."""
-    from .._engine import core
-
     if code == core.OFFSET_TOLERANCE:
         raise GeometryError(
             f"tolerance: {tolerance!r} is below what float64 can guarantee at these "
