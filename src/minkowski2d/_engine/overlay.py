@@ -24,7 +24,6 @@ from .status import status_error
 __all__ = ["overlay", "geometries", "closed_geometries"]
 
 
-
 def geometries(xy: np.ndarray, ro: np.ndarray, po: np.ndarray, group_off: np.ndarray) -> np.ndarray:
     """shapely geometries of the core's ragged rings (each polygon's exterior first):
     per group a Polygon, a MultiPolygon, or an empty Polygon (vectorized)."""
