@@ -589,7 +589,14 @@ def minkowski_sum_many(
     return Ragged(coords, off)
 
 
-def _exact_pairs(ca, a_lo, a_hi, cb, b_lo, b_hi) -> Ragged:
+def _exact_pairs(
+    ca: np.ndarray,
+    a_lo: np.ndarray,
+    a_hi: np.ndarray,
+    cb: np.ndarray,
+    b_lo: np.ndarray,
+    b_hi: np.ndarray,
+) -> Ragged:
     """Pair by pair through minkowski_sum (ints beyond the core's range)."""
     from .convex import minkowski_sum
 

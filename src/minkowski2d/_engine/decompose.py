@@ -57,7 +57,7 @@ def decompose_rings(rings: Any, name: str, merge: bool) -> tuple[np.ndarray, np.
     return verts[vid], off
 
 
-def decompose(geom, merge: bool) -> tuple[np.ndarray, np.ndarray]:
+def decompose(geom: Any, merge: bool) -> tuple[np.ndarray, np.ndarray]:
     """Convex pieces of a valid Polygon / MultiPolygon: ``(coords (N, 2) float64, offsets)``.
 
     ``merge=False`` gives the triangles, ``merge=True`` the Hertel-Mehlhorn pieces.

@@ -4,6 +4,7 @@ compiled call otherwise."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from fractions import Fraction
 from typing import Any
 
@@ -182,7 +183,7 @@ def _polygon_of(dq: list, lines: list) -> Any:
     return _from_exact_points(pts)
 
 
-def _on_line(ln, lines, side, cr) -> Any:
+def _on_line(ln: tuple, lines: list, side: Callable[..., Any], cr: Callable[..., Any]) -> Any:
     """The erosion when it lies on the line ``ln``: clip the line by every half-plane."""
     import shapely
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import partial
 from typing import Any
 
@@ -180,7 +181,7 @@ def _single(a: Any, b: Any, name_a: str, name_b: str, method: str | None = None)
         raise
 
 
-def _progress_bar(progress: Any, total: int):
+def _progress_bar(progress: Any, total: int) -> Callable[[int | None], Any]:
     """``update(n)`` (``None`` closes) for a tqdm bar, a callable, or nothing."""
     if progress is None or progress is False:
         return lambda n: None

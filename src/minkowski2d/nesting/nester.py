@@ -597,7 +597,15 @@ def nest(
     )
 
 
-def _budget(spacing, margin, time_limit, iterations, threads, seed, progress) -> tuple:
+def _budget(
+    spacing: Any,
+    margin: Any,
+    time_limit: Any,
+    iterations: Any,
+    threads: Any,
+    seed: Any,
+    progress: Any,
+) -> tuple:
     """The numeric options, checked (each a specific OptionError naming it)."""
     spacing = _nonneg(spacing, "spacing")
     margin = _nonneg(margin, "margin")
@@ -710,7 +718,17 @@ def _same(a: Any, b: Any) -> bool:
 
 
 def _improve(
-    pb, eng, sol, deadline, iterations, threads, seed, progress, callback, name, time_limit
+    pb: Problem,
+    eng: Any,
+    sol: Any,
+    deadline: float,
+    iterations: int | None,
+    threads: int,
+    seed: int,
+    progress: Any,
+    callback: Callable[[Any], None] | None,
+    name: str | None,
+    time_limit: float | None,
 ) -> Any:
     """The improvement loop (exploration, then compression), compaction and the
     certificate."""

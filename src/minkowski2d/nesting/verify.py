@@ -409,7 +409,9 @@ def _position(g: _Geo, p: int, e: int) -> tuple[int, Fraction]:
     return (e, g.param(p, e))
 
 
-def _shared_same(g: _Geo, a0, a1, b0, b1) -> tuple[np.ndarray, np.ndarray]:
+def _shared_same(
+    g: _Geo, a0: np.ndarray, a1: np.ndarray, b0: np.ndarray, b1: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
     """For collinear edge pairs: (positive-length overlap, same direction)."""
     dx = g.cmp(a1, a0, 0)
     ax = np.where(dx != 0, 0, 1)

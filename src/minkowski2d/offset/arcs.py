@@ -276,7 +276,18 @@ def _num(v: float) -> str:
     return repr(v).removesuffix(".0") if v.is_integer() else repr(v)
 
 
-def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r, sign) -> np.ndarray:
+def _junctions(
+    labels: np.ndarray,
+    near: np.ndarray,
+    MA0: np.ndarray,
+    MA1: np.ndarray,
+    U: np.ndarray,
+    V: np.ndarray,
+    VS: np.ndarray,
+    VE: np.ndarray,
+    r: float,
+    sign: float,
+) -> np.ndarray:
     """Where piece ``labels[q - 1]`` meets piece ``labels[q]`` (moved edge ``i >= 0`` or
     the arc of vertex ``-1 - i``): the tangent point, or the crossing of the two carriers
     (line/line, line/circle, circle/circle) nearest to ``near[q]``; a near-miss (the
@@ -347,7 +358,16 @@ def _junctions(labels, near, MA0, MA1, U, V, VS, VE, r, sign) -> np.ndarray:
     return J
 
 
-def _nearest(pts, A0, U, L, VS, VE, reach: float, chunk: int = 64) -> tuple:
+def _nearest(
+    pts: np.ndarray,
+    A0: np.ndarray,
+    U: np.ndarray,
+    L: np.ndarray,
+    VS: np.ndarray,
+    VE: np.ndarray,
+    reach: float,
+    chunk: int = 64,
+) -> tuple:
     """Label of the nearest feature of the polygon (edge ``e`` >= 0 for its interior,
     ``-1 - v`` for vertex ``v``) and the distance, for each point (float64: a
     construction for the repairs and the verification, not a decision of the offset).
