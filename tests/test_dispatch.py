@@ -293,3 +293,20 @@ def test_cold_start_no_jit(tmp_path):
 
 def test_geometry_errors_are_value_errors():
     assert issubclass(GeometryError, ValueError)
+
+
+@given(st.integers(min_value=-(2**1100), max_value=2**1100), st.integers(0, 1060))
+def test_fits_float64_is_exact_conversion(v, shift):
+    # the one rule "this int converts to float64 exactly", against Python's exact
+    # comparison of an int with the float it converts to
+    from minkowski2d._engine.coerce import fits_float64, ints_fit_float64
+
+    for x in (v, v << shift, (v | 1) << shift):
+        try:
+            exact = float(x) == x
+        except OverflowError:
+            exact = False
+        assert fits_float64(x) == exact, x
+        assert ints_fit_float64([x, 0.5]) == exact
+        if -(2**63) <= x < 2**63:
+            assert ints_fit_float64(np.array([[0, x]], np.int64)) == exact

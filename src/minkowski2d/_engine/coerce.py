@@ -56,6 +56,24 @@ def fits_float64(v: int) -> bool:
     return (m >> ((m & -m).bit_length() - 1)).bit_length() <= 53 and m.bit_length() <= 1024
 
 
+def ints_fit_float64(values: Any) -> bool:
+    """:func:`fits_float64` for every int of ``values``: an int ndarray (one comparison
+    when all are within 2**53), or an iterable of numbers whose non-ints are ignored.
+
+    >>> import numpy as np
+    >>> ints_fit_float64(np.array([[3, 2**60]])), ints_fit_float64([0.5, 2**53 + 1])
+    (True, False)
+    """
+    if isinstance(values, np.ndarray):
+        if values.size == 0 or values.dtype.kind not in "iu":
+            return True
+        if max(int(values.max()), -int(values.min())) <= _F53:
+            return True
+        big = values[(values > _F53) | (values < -_F53)]
+        return all(fits_float64(int(v)) for v in big.ravel().tolist())
+    return all(fits_float64(v) for v in values if type(v) is int)
+
+
 def to_float(v: Any) -> float:
     """The nearest float to an exact number; ``inf`` (with the sign) when it is beyond
     the float range (``float()`` raises OverflowError there)."""

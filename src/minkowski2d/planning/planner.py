@@ -12,7 +12,7 @@ import numpy as np
 
 from .._engine import core
 from .._engine import options as _options
-from .._engine.coerce import is_shapely
+from .._engine.coerce import ints_fit_float64, is_shapely
 from .._engine.foreign import foreign_errors
 from ..errors import (
     OptionError,
@@ -21,8 +21,8 @@ from ..errors import (
 )
 from .queries import _Queries
 from .scene import (
-    _F53,
     _INT_LIMIT,
+    _NOT_F64,
     _SIMPLE_HINT,
     _as_kind,
     _fmt,
@@ -464,8 +464,10 @@ class MotionPlanner(_Queries):
         if self.box is not None:
             vals += [abs(v) for v in self.box]
         big = max((float(v) for v in vals), default=0.0)
-        if kind == "int" and big > _F53:
-            return "int coordinates beyond 2**53"
+        if kind == "int" and not (
+            ints_fit_float64(coords) and ints_fit_float64(self.box if self.box is not None else [])
+        ):
+            return "int coordinates with more than 53 significant bits"
         if big >= _MESH_RANGE:
             return "coordinates beyond 2**500"
         return None
@@ -490,14 +492,18 @@ class MotionPlanner(_Queries):
     def _float_twin(self) -> Any:
         """The same planner on float64 coordinates (for float queries on an int scene)."""
         if self._twin is None:
-            if self.pieces.coords.size and int(np.abs(self.pieces.coords).max()) > _F53:
+            if not ints_fit_float64(self.pieces.coords):
                 raise ShapeError(
-                    "start: float queries on an int scene need |x| <= 2**53",
+                    f"start: float queries on an int scene whose {_NOT_F64}",
                     argument="start",
                     hint="pass int coordinates",
                 )
-            if self.box is not None and max(abs(v) for v in self.box) > _F53:
-                raise ShapeError("start: the workspace needs |x| <= 2**53 for float queries")
+            if self.box is not None and not ints_fit_float64(self.box):
+                raise ShapeError(
+                    f"start: float queries in an int workspace whose {_NOT_F64}",
+                    argument="start",
+                    hint="pass int coordinates",
+                )
             twin = object.__new__(MotionPlanner)
             twin.__dict__.update(self.__dict__)
             twin.pieces = type(self.pieces)(

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._engine import core
-from .._engine.coerce import is_shapely
+from .._engine.coerce import ints_fit_float64, is_shapely
 from ..errors import (
     GeometryError,
     NoPathError,
@@ -15,8 +15,8 @@ from ..errors import (
 )
 from .results import NavMesh, Path
 from .scene import (
-    _F53,
     _INT_LIMIT,
+    _NOT_F64,
     _fmt,
     _point,
     _union_shapes,
@@ -100,11 +100,11 @@ class _Queries:
         """The core that takes these points exactly, and the output kind."""
         floats = any(isinstance(v, float) for p in pts for v in p)
         if self._mesh_box is not None:
-            if any(isinstance(v, int) and abs(v) > _F53 for p in pts for v in p):
+            if not ints_fit_float64(v for p in pts for v in p):
                 if self.kind == "int" and not floats:
                     return self._graph_twin()._route(pts)
                 raise ShapeError(
-                    "start: ints beyond 2**53 next to floats cannot be converted exactly",
+                    f"start: ints next to floats {_NOT_F64}",
                     argument="start",
                 )
             return self, "int" if self.kind == "int" and not floats else "float"
@@ -116,14 +116,11 @@ class _Queries:
                 )
             return self, "int"
         if self.kind == "int":
-            if any(isinstance(v, int) and abs(v) > _F53 for p in pts for v in p):
-                raise ShapeError("start: ints beyond 2**53 next to floats", argument="start")
+            if not ints_fit_float64(v for p in pts for v in p):
+                raise ShapeError(f"start: ints next to floats {_NOT_F64}", argument="start")
             return self._float_twin(), "float"
-        if any(isinstance(v, int) and abs(v) > _F53 for p in pts for v in p):
-            raise ShapeError(
-                "start: ints beyond 2**53 in a float scene cannot be converted exactly",
-                argument="start",
-            )
+        if not ints_fit_float64(v for p in pts for v in p):
+            raise ShapeError(f"start: ints in a float scene {_NOT_F64}", argument="start")
         return self, "float"
 
     def shortest_path(self, start: Any, goal: Any, *, robot: Any = None) -> Path:

@@ -11,7 +11,7 @@ import numpy as np
 
 from .._engine import core
 from .._engine import dispatch as D
-from .._engine.coerce import is_shapely
+from .._engine.coerce import ints_fit_float64, is_shapely
 from ..errors import (
     EmptyGeometryError,
     NonFiniteError,
@@ -20,7 +20,8 @@ from ..errors import (
 )
 
 _NOT_CONVEX = (D.Status.TURNS_BOTH_WAYS, D.Status.SPIKE, D.Status.WINDS_TWICE)
-_F53 = core.FLOAT_EXACT_INT
+#: the end of every message about ints float64 cannot hold (coerce.fits_float64)
+_NOT_F64 = "cannot be converted to float64 exactly (more than 53 significant bits)"
 _INT_LIMIT = core.INT_LIMIT
 
 
@@ -77,9 +78,10 @@ def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
         D.raise_status(code, v, name, data)
     import shapely
 
-    if kind == "int" and np.abs(data).max() > _F53:
+    if kind == "int" and not ints_fit_float64(data):
         raise ShapeError(
-            f"{name}: a non-convex polygon needs |x| <= 2**53",
+            f"{name}: the coordinates of a non-convex polygon (triangulated in float64) "
+            + _NOT_F64,
             argument=name,
             hint="scale the polygon down",
         )
@@ -94,9 +96,9 @@ def _as_kind(arrs: list[np.ndarray], kind: str, name: str) -> list[np.ndarray]:
         return [np.ascontiguousarray(a, dtype=np.int64) for a in arrs]
     out = []
     for a in arrs:
-        if a.dtype == np.int64 and a.size and int(np.abs(a).max()) > _F53:
+        if a.dtype == np.int64 and not ints_fit_float64(a):
             raise ShapeError(
-                f"{name}: ints beyond 2**53 next to floats cannot be converted exactly",
+                f"{name}: ints next to floats {_NOT_F64}",
                 argument=name,
                 hint="pass all coordinates as ints, or scale down",
             )
