@@ -38,7 +38,7 @@ from ._engine.coerce import as_array, is_shapely
 from ._engine.containers import unbox
 from ._engine.overlay import check as _check_overlay
 from ._engine.overlay import closed_geometries
-from ._engine.polygon import Rings, polygon_arrays, problem_error
+from ._engine.polygon import Rings, polygon_arrays, polygon_parts, problem_error
 from .batch import Ragged
 from .errors import GeometryError, ShapeError
 
@@ -113,7 +113,6 @@ def _ring(obj: Any, name: str) -> Any:
 
 def _polygonal(obj: Any, name: str) -> Any:
     """One operand as a shapely Polygon or MultiPolygon (possibly empty)."""
-    import shapely
 
     if isinstance(obj, Ragged):
         obj = obj.to_list()
@@ -121,24 +120,14 @@ def _polygonal(obj: Any, name: str) -> Any:
         gt = obj.geom_type
         if gt in _POLYGONAL:
             return obj
-        if gt == "GeometryCollection":
-            parts = shapely.get_parts(obj)
-            bad = [p.geom_type for p in parts if p.geom_type not in _POLYGONAL and not p.is_empty]
-            if bad:
-                raise ShapeError(
-                    f"{name}: a GeometryCollection holding a {bad[0]}; a boolean operand "
-                    "holds only polygons",
-                    argument=name,
-                    hint="clip lines with mk.clip_lines",
-                )
-            return _multi([p for p in parts if not p.is_empty])
-        if gt == "LinearRing":
-            return shapely.Polygon(obj)
-        raise ShapeError(
-            f"{name}: a {gt} is not polygonal",
-            argument=name,
-            hint="pass polygons; clip lines with mk.clip_lines",
-        )
+        got = polygon_parts(obj, name, empty_ok=True, hint="clip lines with mk.clip_lines")
+        if got is None:
+            raise ShapeError(
+                f"{name}: a {gt} is not polygonal",
+                argument=name,
+                hint="pass polygons; clip lines with mk.clip_lines",
+            )
+        return _multi(list(got.parts))
     if isinstance(obj, (list, tuple)) and obj and (is_shapely(obj[0]) or np.ndim(obj[0]) == 2):
         return _multi([_polygonal(item, f"{name}[{k}]") for k, item in enumerate(obj)])
     return _ring(obj, name)

@@ -29,7 +29,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from ..errors import EmptyGeometryError, GeometryError
+from ..errors import EmptyGeometryError, GeometryError, ShapeError
 from . import core
 from .core import Invalid, Status
 from .status import status_error
@@ -40,6 +40,8 @@ __all__ = [
     "Invalid",
     "rings_of",
     "rings_of_array",
+    "Polygonal",
+    "polygon_parts",
     "check",
     "check_split",
     "triangulate",
@@ -98,6 +100,66 @@ def rings_of(geom: Any) -> Rings:
 #: the offsets of one polygon in one geometry (read-only: shared by every call)
 _ONE = np.array([0, 1], np.int64)
 _ONE.flags.writeable = False
+
+
+class Polygonal(NamedTuple):
+    """The polygons of one polygonal shapely geometry (see :func:`polygon_parts`)."""
+
+    parts: np.ndarray  # (P,) object array of non-empty shapely Polygons, in order
+    collection: bool  # a GeometryCollection (its parts may overlap: united by the caller)
+    multi: bool  # a MultiPolygon (its parts must be disjoint)
+
+
+def polygon_parts(
+    geom: Any, name: str, *, empty_ok: bool = False, hint: str | None = None
+) -> Polygonal | None:
+    """The one reading of polygonal shapely input: a Polygon, a MultiPolygon, a
+    LinearRing (the polygon it bounds) or a GeometryCollection of polygons, as its
+    non-empty Polygons; None for a geometry that is not polygonal (points, lines: the
+    caller reads their coordinates or refuses them).
+
+    Raises EmptyGeometryError when nothing is left (unless ``empty_ok``), ShapeError
+    for a GeometryCollection holding anything but polygons (``hint``: what to do).
+
+    >>> import shapely
+    >>> gc = shapely.GeometryCollection([shapely.box(0, 0, 1, 1), shapely.Polygon()])
+    >>> r = polygon_parts(gc, "a")
+    >>> len(r.parts), r.collection, r.multi
+    (1, True, False)
+    >>> polygon_parts(shapely.Point(0, 0), "a") is None
+    True
+    """
+    import shapely
+
+    gt = geom.geom_type
+    if gt == "LinearRing":
+        geom, gt = shapely.Polygon(geom), "Polygon"
+    if gt == "Polygon":
+        if not geom.is_empty:  # the common case, without the array calls below
+            one = np.empty(1, object)
+            one[0] = geom
+            return Polygonal(one, False, False)
+        parts = np.empty(0, object)
+    elif gt == "MultiPolygon":
+        parts = shapely.get_parts(geom)
+    elif gt == "GeometryCollection":
+        members = shapely.get_parts(geom)
+        ids = shapely.get_type_id(members)
+        bad = members[~np.isin(ids, (3, 6)) & ~shapely.is_empty(members)]
+        if len(bad):
+            raise ShapeError(
+                f"{name}: a GeometryCollection holding a {bad[0].geom_type}: only polygons "
+                "may be given here",
+                argument=name,
+                hint=hint,
+            )
+        parts = shapely.get_parts(members[np.isin(ids, (3, 6))])
+    else:
+        return None
+    parts = parts[~shapely.is_empty(parts)]
+    if not len(parts) and not empty_ok:
+        raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
+    return Polygonal(parts, gt == "GeometryCollection", gt == "MultiPolygon")
 
 
 def polygon_arrays(geoms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

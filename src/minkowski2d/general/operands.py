@@ -14,7 +14,6 @@ from .._engine import options as _options
 from .._engine.coerce import as_array, fits_float64, is_shapely, to_float
 from ..batch import Ragged
 from ..errors import (
-    EmptyGeometryError,
     GeometryError,
     OverflowGeometryError,
     ShapeError,
@@ -135,25 +134,19 @@ def _coords_raw(obj: Any, name: str) -> _Raw:
 
 def _parse(obj: Any, name: str) -> _Raw:
     """Check the type of one operand (see :func:`minkowski_sum_general`); no GEOS call."""
-    import shapely
 
     if isinstance(obj, Ragged):
         obj = obj.to_list()
-    mod = type(obj).__module__
-    if mod.startswith("shapely"):
-        gt = obj.geom_type
-        if gt in ("Polygon", "MultiPolygon"):
-            if obj.is_empty:
-                raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
-            return _Raw("geom", obj, name)
-        if gt == "GeometryCollection":
-            parts = shapely.get_parts(obj)
-            if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
-                raise ShapeError(
-                    f"{name}: a GeometryCollection may hold only polygons", argument=name
-                )
-            return _parse(list(parts), name)
-        return _coords_raw(obj, name)  # ring, line, points
+    if is_shapely(obj):
+        from .._engine.polygon import polygon_parts
+
+        got = None if obj.geom_type == "LinearRing" else polygon_parts(obj, name)
+        if got is None:
+            return _coords_raw(obj, name)  # ring, line, points
+        if got.collection:  # a collection of polygons: their union is the operand
+            parts = [_Raw("geom", p, f"{name}[{k}]") for k, p in enumerate(got.parts)]
+            return _Raw("items", parts, name)
+        return _Raw("geom", obj, name)
     if type(obj).__name__ == "UnboundedPolygon":
         raise ShapeError(
             f"{name}: the polygon has an unbounded outer boundary (CGAL N = 0); "

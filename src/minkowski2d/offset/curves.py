@@ -16,7 +16,6 @@ from .._engine.coerce import as_array, is_shapely
 from .._engine.containers import is_many
 from .._engine.status import status_error
 from ..errors import (
-    EmptyGeometryError,
     GeometryError,
     NonFiniteError,
     OverflowGeometryError,
@@ -59,12 +58,14 @@ _HINT = "repair it: the boundary must not cross itself, holes must lie inside"
 _NONFINITE_HINT = "remove NaN and inf"
 
 
-def _arrays(geoms: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _arrays(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Coordinates (closing repeats kept), ring offsets and polygon offsets of shapely
-    Polygons (empty ones dropped): the one reader's (``polygon_arrays``)."""
+    Polygons (a list or object array; empty ones dropped): ``polygon_arrays``'s."""
     from .._engine.polygon import polygon_arrays
 
-    xy, ro, po, _ = polygon_arrays(np.array(geoms, dtype=object))
+    if not isinstance(geoms, np.ndarray):
+        geoms = np.array(geoms, dtype=object)
+    xy, ro, po, _ = polygon_arrays(geoms)
     return xy, ro, po
 
 
@@ -92,39 +93,17 @@ def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
 
 def _shapely_input(geom: Any, name: str) -> _Input:
     """A shapely ring, polygon, multipolygon or collection of them, validated."""
-    import shapely
+    from .._engine.polygon import polygon_parts
 
-    gt = geom.geom_type
-    if gt == "LinearRing":
-        geom = shapely.Polygon(geom)
-        gt = "Polygon"
-    unite = False
-    if gt == "GeometryCollection":
-        parts = shapely.get_parts(geom)
-        if not np.isin(shapely.get_type_id(parts), (3, 6)).all():
-            raise ShapeError(
-                f"{name}: a GeometryCollection may hold only polygons",
-                argument=name,
-                hint="pass the polygons only",
-            )
-        polys = shapely.get_parts(parts)
-        unite = len(polys) > 1
-    elif gt == "Polygon":
-        if geom.is_empty:
-            raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
-        return _validated(*_arrays([geom]), name, False)
-    elif gt == "MultiPolygon":
-        polys = shapely.get_parts(geom)
-    else:
+    got = polygon_parts(geom, name, hint="pass the polygons only")
+    if got is None:
         raise ShapeError(
-            f"{name}: cannot offset a {gt} here (give a polygon, a ring or an (n, 2) array)",
+            f"{name}: cannot offset a {geom.geom_type} here (give a polygon, a ring or an "
+            "(n, 2) array)",
             argument=name,
             hint="pass the coordinates as an (n, 2) array for a point or a segment",
         )
-    polys = polys[~shapely.is_empty(polys)]
-    if len(polys) == 0:
-        raise EmptyGeometryError(f"{name}: empty {gt}", argument=name)
-    return _validated(*_arrays(polys), name, unite)
+    return _validated(*_arrays(got.parts), name, got.collection and len(got.parts) > 1)
 
 
 #: constant arrays of the single-polygon call
