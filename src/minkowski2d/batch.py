@@ -20,11 +20,11 @@ from ._engine import dispatch as D
 from ._engine import options as _options
 from ._engine.coerce import as_array, is_shapely
 from ._engine.containers import apply, boxed, is_many
+from ._engine.status import nonfinite
 from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
     CoordinateTypeError,
     EmptyGeometryError,
-    NonFiniteError,
     NotConvexError,
     ShapeError,
 )
@@ -110,12 +110,7 @@ class Ragged:
                 if not (np.diff(offsets) == 0).any():
                     return cls(coords, offsets)
             elif status == _NONFINITE:
-                nm = f"{name}[{member}]"
-                raise NonFiniteError(
-                    f"{nm}: vertex {vertex} has a non-finite coordinate",
-                    argument=nm,
-                    vertex=int(vertex),
-                )
+                raise nonfinite(f"{name}[{member}]", int(vertex))
         if not hasattr(polygons, "__iter__") or isinstance(polygons, (str, bytes)):
             raise ShapeError(
                 f"{name}: expected a sequence of polygons, got {type(polygons).__name__}",
@@ -150,9 +145,7 @@ class Ragged:
                 row = int(np.flatnonzero(~np.isfinite(coords).all(axis=1))[0])
                 offsets = np.concatenate(([0], np.cumsum(lengths)))
                 k = int(np.searchsorted(offsets, row, side="right") - 1)
-                raise NonFiniteError(
-                    f"{name}[{k}]: vertex {row - offsets[k]} has a non-finite coordinate"
-                )
+                raise nonfinite(f"{name}[{k}]", int(row - offsets[k]), arrs[k])
         elif coords.dtype.kind in "iu":
             coords = coords.astype(np.int64, copy=False)
         offsets = np.zeros(len(arrs) + 1, np.int64)

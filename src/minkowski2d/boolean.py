@@ -570,15 +570,11 @@ def clip_lines(
     if (info[:, 0] != core.Status.OK).any():
         t = int(np.flatnonzero(info[:, 0] != core.Status.OK)[0])
         if int(info[t, 1]) == 0:  # a line vertex that is not finite
-            from .errors import NonFiniteError
+            from ._engine.status import nonfinite
 
             name = "lines" if labels is None else f"lines[{labels[t]}]"
-            raise NonFiniteError(
-                f"{name}: a coordinate is not finite (line {int(info[t, 3])}, vertex "
-                f"{int(info[t, 4])})",
-                argument=name,
-                vertex=int(info[t, 4]),
-            )
+            line, vertex = int(info[t, 3]), int(info[t, 4])
+            raise nonfinite(name, vertex, where=f"line {line}, vertex {vertex}")
         info = info.copy()
         info[:, 1] = 0
         _raise(info, (A,), ("polygons",), labels)

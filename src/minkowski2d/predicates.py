@@ -32,6 +32,7 @@ import numpy as np
 
 from ._engine import core
 from ._engine import dispatch as D
+from ._engine.status import nonfinite
 from .errors import NonFiniteError, ShapeError
 
 __all__ = ["orient", "cross_sign", "orient_array", "ERRBOUND", "MINBOUND"]
@@ -54,11 +55,7 @@ def _cross(pts: tuple[Any, ...], names: tuple[str, ...]) -> int:
         op = D.operand(list(pts), "point")
     except NonFiniteError as exc:
         k = exc.vertex if isinstance(exc.vertex, int) and 0 <= exc.vertex < len(pts) else 0
-        raise NonFiniteError(
-            f"{names[k]}: non-finite coordinate ({pts[k]!r})",
-            argument=names[k],
-            hint="coordinates must be finite numbers",
-        ) from None
+        raise nonfinite(names[k], k, pts, where="the point") from None
     if op.path == "i":
         return core.cross_sign_i(*op.data.ravel().tolist())
     if op.path == "f":
@@ -165,12 +162,7 @@ def orient_array(p: Any, q: Any, r: Any) -> np.ndarray:
             bad = ~np.isfinite(v).all(axis=1)
             if bad.any():
                 row = int(np.flatnonzero(bad)[0])
-                raise NonFiniteError(
-                    f"{name}: non-finite coordinate in row {row}",
-                    argument=name,
-                    vertex=row,
-                    hint="coordinates must be finite numbers",
-                )
+                raise nonfinite(name, row, v, where=f"row {row}")
     if all(k in "iub" for k in kinds) and max(_int_span(v) for v in arrs) < _INT_LIMIT:
         pi, qi, ri = (np.ascontiguousarray(v, dtype=np.int64) for v in arrs)
         return core.orient_i(pi, qi, ri)

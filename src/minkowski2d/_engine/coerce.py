@@ -24,11 +24,11 @@ import numpy as np
 from ..errors import (
     CoordinateTypeError,
     EmptyGeometryError,
-    NonFiniteError,
     NotConvexError,
     ShapeError,
 )
 from . import core
+from .status import nonfinite
 
 INT, FLOAT, EXACT = "int", "float", "exact"
 #: floats next to ints beyond 2**53: exact decisions (Fractions), float output
@@ -125,9 +125,7 @@ def _exact_wide(arr: np.ndarray, name: str) -> tuple[list, str] | None:
         return None
     if not np.isfinite(arr).all():
         bad = int(np.flatnonzero(~np.isfinite(arr).all(axis=1))[0])
-        raise NonFiniteError(
-            f"{name}: vertex {bad} has a non-finite coordinate", argument=name, vertex=bad
-        )
+        raise nonfinite(name, bad, arr)
     F = Fraction
     return [(F(*x.as_integer_ratio()), F(*y.as_integer_ratio())) for x, y in arr], EXACT
 
@@ -187,11 +185,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
         tx = type(x)
         if tx is type(y) and (tx is int or tx is float):
             if tx is float and ((x - x) or (y - y)):  # nan for inf and nan, 0.0 otherwise
-                raise NonFiniteError(
-                    f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})",
-                    argument=name,
-                    vertex=k,
-                )
+                raise nonfinite(name, k, {k: (x, y)})
             if tx is int:
                 kinds.add(INT)
                 if not (-_F53 <= x <= _F53 and -_F53 <= y <= _F53):
@@ -212,11 +206,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
             if kv == FLOAT:
                 v = float(v)
                 if v - v:
-                    raise NonFiniteError(
-                        f"{name}: vertex {k} has a non-finite coordinate ({x!r}, {y!r})",
-                        argument=name,
-                        vertex=k,
-                    )
+                    raise nonfinite(name, k, {k: (x, y)})
             elif kv == INT:
                 v = int(v)
                 if not -_F53 <= v <= _F53:
@@ -286,12 +276,7 @@ def as_array(obj: Any, name: str, check_finite: bool = True) -> tuple[np.ndarray
         # ``check_finite=False``: the caller's own range pass (convex._fits_kernel) checks
         if check_finite and not np.isfinite(a).all():
             bad = int(np.flatnonzero(~np.isfinite(a).all(axis=1))[0])
-            raise NonFiniteError(
-                f"{name}: vertex {bad} has a non-finite coordinate "
-                f"({float(a[bad, 0])!r}, {float(a[bad, 1])!r})",
-                argument=name,
-                vertex=bad,
-            )
+            raise nonfinite(name, bad, a)
         return a, FLOAT
     if dk == "i":
         return arr.astype(np.int64, copy=False), INT

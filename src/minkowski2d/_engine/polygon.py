@@ -40,6 +40,8 @@ __all__ = [
     "Invalid",
     "rings_of",
     "rings_of_array",
+    "FLAT",
+    "is_flat",
     "Polygonal",
     "polygon_parts",
     "check",
@@ -64,6 +66,16 @@ _TEXT = {
     Invalid.HOLE_IN_HOLE: "a hole lies inside another hole",
     Invalid.POLYGONS_OVERLAP: "two polygons of the collection overlap",
 }
+
+
+#: the verdicts of a flat ring (a point, a segment, collinear points): the readers that
+#: accept degenerate convex sets take its convex hull instead of refusing it
+FLAT = (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA)
+
+
+def is_flat(status: int, reason: int) -> bool:
+    """Whether the core's verdict on a ring says it is flat (see :data:`FLAT`)."""
+    return status == Status.INVALID_POLYGON and reason in FLAT
 
 
 class Rings(NamedTuple):

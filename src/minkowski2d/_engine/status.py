@@ -42,7 +42,7 @@ from ..errors import (
 from . import exact as _exact
 from .core import Status
 
-__all__ = ["Status", "status_error", "raise_status", "NOT_CONVEX"]
+__all__ = ["Status", "status_error", "raise_status", "nonfinite", "NOT_CONVEX"]
 
 #: the convexity statuses (one message each, in :func:`exact.not_convex`)
 NOT_CONVEX = (Status.TURNS_BOTH_WAYS, Status.SPIKE, Status.WINDS_TWICE)
@@ -121,6 +121,19 @@ def status_error(
         argument=name,
         hint=hint,
     )
+
+
+def nonfinite(
+    name: str,
+    vertex: int = 0,
+    coords: Any = None,
+    *,
+    where: str | None = None,
+    hint: str | None = None,
+) -> GeometryError:
+    """``status_error(Status.NONFINITE, ...)``: the one message of a NaN or infinite
+    coordinate, for the readers that find it before the core does."""
+    return status_error(Status.NONFINITE, vertex, name, coords, where=where, hint=hint)
 
 
 def raise_status(code: int, vertex: int, name: str, coords: Any = None) -> None:

@@ -235,12 +235,12 @@ def _build(raw: _Raw) -> _Operand:
     ring = _float_ring(raw)
     rings = rings_of_array(ring)
     if len(ring):
-        from .._engine.polygon import Invalid, probe
+        from .._engine.polygon import is_flat, probe
 
         status, reason, _, _, orientation, disconnected = probe(rings)
         if status == core.Status.OK and not disconnected.any():
             return _Operand(rings, orientation, None, name)
-        if status and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
+        if is_flat(status, reason):
             # a point, a segment, or collinear points: a degenerate convex set
             from .._engine import dispatch as D
 

@@ -217,7 +217,7 @@ def _plain_ring(x: Any) -> np.ndarray | None:
 def _pair_fast(a: np.ndarray, b: np.ndarray, method: str | None) -> Any:
     """``A ⊕ B`` of two plain rings in one compiled call (validated there); None when a
     ring needs the general reader (no area, or a ring that pinches itself)."""
-    from .._engine.polygon import Invalid, problem_error, rings_of_array
+    from .._engine.polygon import is_flat, problem_error, rings_of_array
 
     status, which, reason, ring, vertex, xy, ro, po = core.general_pair(
         a,
@@ -229,10 +229,7 @@ def _pair_fast(a: np.ndarray, b: np.ndarray, method: str | None) -> Any:
     )
     if status == core.Status.OK:
         return geometries(xy, ro, po, np.array([0, len(po) - 1], np.int64))[0]
-    if status == core.Status.RANGE or (
-        status == core.Status.INVALID_POLYGON
-        and reason in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA)
-    ):
+    if status == core.Status.RANGE or is_flat(status, reason):
         return None
     if which >= 0:
         name = "ab"[which]

@@ -17,7 +17,6 @@ from .._engine.containers import is_many
 from .._engine.status import status_error
 from ..errors import (
     GeometryError,
-    NonFiniteError,
     OverflowGeometryError,
     ShapeError,
 )
@@ -160,18 +159,18 @@ def _read(obj: Any, name: str) -> _Input:
     data = np.asarray(data, dtype=np.float64)
     if len(data) > 1 and (data[0] == data[-1]).all():
         data = data[:-1]
-    if not np.isfinite(data).all():
-        raise NonFiniteError(
-            f"{name}: a coordinate is not finite", argument=name, hint=_NONFINITE_HINT
-        )
-    from .._engine.polygon import Invalid, probe, rings_of_array
+    finite = np.isfinite(data).all(axis=1)
+    if not finite.all():
+        k = int(np.flatnonzero(~finite)[0])
+        raise status_error(core.Status.NONFINITE, k, name, data, hint=_NONFINITE_HINT)
+    from .._engine.polygon import is_flat, probe, rings_of_array
 
     rings = rings_of_array(data)
     if len(data) >= 3:
         status, reason = probe(rings)[:2]
         if status == core.Status.OK:
             return _one_ring(data, delta)  # the common case: a valid ring (exact check)
-        if reason not in (Invalid.RING_FEW_VERTICES, Invalid.RING_NO_AREA):
+        if not is_flat(status, reason):
             _validated(*rings, name, False)  # raises the core's verdict
     # a point, a segment, or collinear points: a degenerate convex set
     from .._engine import dispatch as D

@@ -12,6 +12,7 @@ import numpy as np
 from .._engine import core
 from .._engine import dispatch as D
 from .._engine.coerce import ints_fit_float64, is_shapely
+from .._engine.status import nonfinite
 from ..errors import (
     EmptyGeometryError,
     NonFiniteError,
@@ -124,11 +125,7 @@ def _scalar(v: Any, name: str) -> int | float:
     if isinstance(v, (float, np.floating)):
         f = float(v)
         if not math.isfinite(f):
-            raise NonFiniteError(
-                f"{name}: a coordinate is not finite ({f!r})",
-                argument=name,
-                hint="remove NaN and infinite values",
-            )
+            raise nonfinite(name, where=f"the value {f!r}")
         return f
     if isinstance(v, Fraction):
         f = float(v)
