@@ -283,9 +283,7 @@ def translate(p: ArrayLike2, v: Any) -> Polygon:
     with np.errstate(over="ignore", invalid="ignore"):
         out = P + V[0]
     if not np.isfinite(out).all():
-        raise OverflowGeometryError(
-            "result overflows float64 (a coordinate is infinite)", argument="result"
-        )
+        raise D.status_error(D.Status.OVERFLOW)
     return out
 
 

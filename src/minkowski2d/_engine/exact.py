@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import NotConvexError, OverflowGeometryError
+from ..errors import NotConvexError
 from .core import Status
 
 __all__ = ["normalize_list", "merge_lists", "hull_list", "to_array", "not_convex", "cross"]
@@ -209,11 +209,9 @@ def to_array(pts: list, out_kind: str) -> np.ndarray:
         except OverflowError:
             out = np.array([np.inf])
         if not np.isfinite(out).all():
-            raise OverflowGeometryError(
-                "result overflows float64 (a coordinate is infinite)",
-                argument="result",
-                hint="scale the input down",
-            )
+            from .status import status_error  # (status imports this module)
+
+            raise status_error(Status.OVERFLOW)
         return out.reshape(-1, 2)
     if out_kind == "int":
         try:

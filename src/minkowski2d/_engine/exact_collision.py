@@ -10,7 +10,6 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import OverflowGeometryError
 from . import core
 from . import exact as _exact
 from .coerce import to_float
@@ -47,7 +46,9 @@ def _sg(v: Any) -> int:
 def _fl(v: Any) -> float:
     f = to_float(v)
     if not math.isfinite(f):
-        raise OverflowGeometryError("result overflows float64 (a coordinate is infinite)")
+        from .status import status_error
+
+        raise status_error(core.Status.OVERFLOW)
     return f
 
 

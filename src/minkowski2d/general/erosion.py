@@ -14,7 +14,6 @@ from .._engine import core
 from .._engine.coerce import to_float
 from .._engine.overlay import geometries
 from ..errors import (
-    OverflowGeometryError,
     ShapeError,
 )
 from . import limits
@@ -213,11 +212,9 @@ def _to_float(v: Fraction) -> float:
     """The nearest double to an exact coordinate of a result."""
     f = to_float(v)
     if math.isinf(f):
-        raise OverflowGeometryError(
-            "a, b: the result overflows float64 (a coordinate beyond ±1.8e308)",
-            argument="a, b",
-            hint="scale the input down; the result's coordinates must fit in float64",
-        )
+        from .._engine.status import Status, status_error
+
+        raise status_error(Status.OVERFLOW, name="a, b")
     return f
 
 
