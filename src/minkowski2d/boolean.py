@@ -133,6 +133,28 @@ def _polygonal(obj: Any, name: str) -> Any:
     return _ring(obj, name)
 
 
+def _paired(
+    box: Any, ga: Any, gb: Any, read_a: Any, read_b: Any, names: tuple[str, str]
+) -> tuple[np.ndarray, np.ndarray, list | None]:
+    """The operands of a pairwise call as two equal-length object arrays and the pairs'
+    labels: two single operands (no container: one pair, no labels), or containers
+    paired member by member, a single operand repeated against a container."""
+    if box is None:
+        return np.array([read_a()], dtype=object), np.array([read_b()], dtype=object), None
+    n = len(box.geoms)
+    if ga is None:
+        ga = np.full(n, read_a(), dtype=object)
+    if gb is None:
+        gb = np.full(n, read_b(), dtype=object)
+    if len(ga) != len(gb):
+        raise ShapeError(
+            f"{names[0]} has {len(ga)} members but {names[1]} has {len(gb)}; pairs need "
+            "equal counts",
+            argument=names[1],
+        )
+    return ga, gb, [box.label(k) for k in range(n)]
+
+
 def _multi(geoms: list) -> Any:
     import shapely
 
@@ -219,22 +241,9 @@ def _binary(op: str, a: Any, b: Any, fill_rule: Any, threads: int) -> Any:
     box_a, ga = _members(a, "a")
     box_b, gb = _members(b, "b")
     box = box_a if box_a is not None else box_b
-    if box is None:  # two single operands
-        ga = np.array([_polygonal(a, "a")], dtype=object)
-        gb = np.array([_polygonal(b, "b")], dtype=object)
-        labels = None
-    else:
-        n = len(box.geoms)
-        if ga is None:
-            ga = np.full(n, _polygonal(a, "a"), dtype=object)
-        if gb is None:
-            gb = np.full(n, _polygonal(b, "b"), dtype=object)
-        if len(ga) != len(gb):
-            raise ShapeError(
-                f"a has {len(ga)} members but b has {len(gb)}; pairs need equal counts",
-                argument="b",
-            )
-        labels = [box.label(k) for k in range(n)]
+    ga, gb, labels = _paired(
+        box, ga, gb, lambda: _polygonal(a, "a"), lambda: _polygonal(b, "b"), ("a", "b")
+    )
     A, B = _Arrays(ga), _Arrays(gb)
     xy, ro, po, to, info = core.boolean_f(
         A.xy, A.ro, A.po, A.to, B.xy, B.ro, B.po, B.to,
@@ -539,28 +548,21 @@ def clip_lines(
     box_l = unbox(lines)
     box_p, gp = _members(polygons, "polygons")
     box = box_l if box_l is not None else box_p
+    gl = None
     if box_l is not None:
         gl = box_l.geoms.copy()
         null = np.equal(gl, None)  # type: ignore[call-overload]  # numpy's stubs take no None
         for k in np.flatnonzero(~null):
             gl[k] = _lineal(gl[k], f"lines[{box_l.label(int(k))}]")
         gl[null] = shapely.LineString()
-    if box is None:
-        gl = np.array([_lineal(lines, "lines")], dtype=object)
-        gp = np.array([_polygonal(polygons, "polygons")], dtype=object)
-        labels = None
-    else:
-        n = len(box.geoms)
-        if box_l is None:
-            gl = np.full(n, _lineal(lines, "lines"), dtype=object)
-        if gp is None:
-            gp = np.full(n, _polygonal(polygons, "polygons"), dtype=object)
-        if len(gl) != len(gp):
-            raise ShapeError(
-                f"lines has {len(gl)} members but polygons has {len(gp)}; pairs need equal counts",
-                argument="polygons",
-            )
-        labels = [box.label(k) for k in range(n)]
+    gl, gp, labels = _paired(
+        box,
+        gl,
+        gp,
+        lambda: _lineal(lines, "lines"),
+        lambda: _polygonal(polygons, "polygons"),
+        ("lines", "polygons"),
+    )
     lxy, lo, lt = _line_arrays(gl)
     A = _Arrays(gp)
     xy, off, to, info = core.clip_lines_f(
