@@ -92,8 +92,8 @@ inline void add_polys(ov::Geo& g, const Polys& a, const std::vector<int>& w, std
 }
 
 struct Limits {
-  i64 max_crossings = (i64)1 << 62;
-  i64 max_pairs = (i64)1 << 62;
+  i64 max_crossings = NO_LIMIT;
+  i64 max_pairs = NO_LIMIT;
 };
 
 // One boolean: a (layer 0) op b (layer 1) under the rule (ov::make_rule), or, when b has

@@ -38,6 +38,16 @@ inline double next_up(double x) {
 }
 inline double next_down(double x) { return -next_up(-x); }
 
+// The slack of a span computed in double near coordinates of magnitude M: the part of a
+// segment within a band of rows (a clip by interpolation, a few roundings) and the cells
+// it reaches are widened by this much, far more than their rounding errors (a few ulps of
+// M, 2^-52 M each) and than the low part of a DD coordinate (half an ulp); the 1e-300
+// keeps it positive at M = 0. Used only to gather candidates (cells, segment pairs, edges
+// to test) for exact tests, where a wider span only adds candidates: the grid of
+// segment_pairs and the coverage test of union.hpp (which widened by 1e-14 M before; the
+// larger of the two is safe for both).
+inline double span_slack(double M) { return 1e-12 * M + 1e-300; }
+
 template <class F, class C = double>
 void box_pairs(i64 n, const C* xmin, const C* xmax, const C* ymin, const C* ymax, F&& on_pair) {
   if (n < 2) return;
@@ -271,7 +281,7 @@ inline bool segment_pairs(i64 n, const double* ax, const double* ay, const doubl
     }
     const double M = std::max(std::max(std::fabs(px), std::fabs(qx)),
                               std::max(std::fabs(py), std::fabs(qy)));
-    const double t = tol[i] + 1e-12 * M + 1e-300;
+    const double t = tol[i] + span_slack(M);
     const i64 r0 = cy_lo(py - t), r1 = cy_hi(qy + t);
     for (i64 r = r0; r <= r1; ++r) {
       double xl, xh;

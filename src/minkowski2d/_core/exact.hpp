@@ -71,6 +71,9 @@ constexpr double ERRBOUND = (3.0 + 16.0 * EPS) * EPS;          // Shewchuk's ccw
 constexpr double MINBOUND = ERRBOUND * 0x1p-960;
 // int64 coordinates must satisfy |x| < INT_LIMIT for the __int128 cross products.
 constexpr i64 INT_LIMIT = (i64)1 << 62;
+// "no limit" for the work budgets (crossings, candidate pairs, segments): a count no run
+// reaches (the same value as INT_LIMIT, a different meaning).
+constexpr i64 NO_LIMIT = (i64)1 << 62;
 // ints with |x| <= FLOAT_EXACT_INT convert to float64 exactly (2^53).
 constexpr i64 FLOAT_EXACT_INT = (i64)1 << 53;
 constexpr double SPLITTER = 134217729.0;  // 2^27 + 1

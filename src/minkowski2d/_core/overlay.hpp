@@ -522,8 +522,8 @@ class Overlay {
   // work budget: a run that would node more crossings, or classify more candidate
   // pairs (box-overlapping edge pairs), stops (exceeded() is then true and the result is
   // empty); the caller reports RESOURCE
-  i64 max_crossings = (i64)1 << 62;
-  i64 max_pairs = (i64)1 << 62;
+  i64 max_crossings = NO_LIMIT;
+  i64 max_pairs = NO_LIMIT;
   bool exceeded() const { return over_; }
   // from this many edges on, candidate pairs come from a grid (boxes.hpp segment_pairs)
   i64 grid_min = 512;
@@ -1950,7 +1950,7 @@ class Cascade {
  public:
   explicit Cascade(Geo& g, i64 leaf = 4) : g_(g), o_(g), leaf_(leaf < 1 ? 1 : leaf) {}
   i64 n_crossings = 0, n_runs = 0;
-  i64 max_crossings = (i64)1 << 62;  // over all runs; then RESOURCE
+  i64 max_crossings = NO_LIMIT;  // over all runs; then RESOURCE
 
   void unite(const std::vector<std::vector<EdgeIn>>& parts, Rings& out) {
     out.clear();

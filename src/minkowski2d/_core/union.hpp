@@ -229,8 +229,8 @@ class BoundaryIndex {
     }
     M = std::max(std::max(std::fabs(px0), std::fabs(px1)), std::max(std::fabs(py0), std::fabs(py1)));
     // the spans below are in double: widened by far more than their rounding errors
-    // (a few ulps of M) and the DD parts (half an ulp)
-    const double tol = 1e-14 * M + 1e-300;
+    // (a few ulps of M) and the DD parts (half an ulp), see span_slack
+    const double tol = span_slack(M);
     const i64 nx = xs_.n;
     i64 c0 = xs_.first(px0 - tol), c1 = xs_.last(px1 + tol);
     i64 r0 = ys_.first(py0 - tol), r1 = ys_.last(py1 + tol);
@@ -474,7 +474,7 @@ class ConvexUnion {
  public:
   explicit ConvexUnion(Geo& g) : g_(g), o_(g), idx_(g) {}
   // work limits over all runs (see 4. above)
-  i64 max_crossings = (i64)1 << 62, max_pairs = (i64)1 << 62;
+  i64 max_crossings = NO_LIMIT, max_pairs = NO_LIMIT;
 
   UnionStats st;
   BoundaryIndex& index() { return idx_; }
@@ -762,7 +762,7 @@ struct Workspace {
     g.lines.clear();
     g.verts.clear();
     u.cull = true;
-    u.max_crossings = u.max_pairs = (i64)1 << 62;
+    u.max_crossings = u.max_pairs = NO_LIMIT;
   }
 };
 
@@ -908,7 +908,7 @@ inline int sum_pieces_union(ConvexUnion& u, const double* pa, const i64* oa, i64
 // The same with this thread's workspace (see with_workspace).
 inline int sum_pieces_union(const double* pa, const i64* oa, i64 na, const double* pb,
                             const i64* ob, i64 nb, Rings& out, UnionStats& st,
-                            i64 max_crossings = (i64)1 << 62, i64 max_pairs = (i64)1 << 62,
+                            i64 max_crossings = NO_LIMIT, i64 max_pairs = NO_LIMIT,
                             bool cull = true, i64* bad = nullptr) {
   return with_workspace([&](Workspace& w) {
     w.u.cull = cull;
