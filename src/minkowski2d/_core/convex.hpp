@@ -2,7 +2,8 @@
 //
 // One normalization and one merge serve the single call, the batch, the trace and the
 // collision walks. Polygons are (n, 2) row-major coordinate arrays of T (int64_t with
-// |x| < 2^62, or finite double); every decision goes through mk::cross_sign.
+// |x| < 2^62, or finite double); every decision goes through exact.hpp (cross_sign and
+// orient; the turn pass counts the turns filter_sign certifies, the others go exact).
 #pragma once
 
 #include <algorithm>
@@ -130,10 +131,9 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp, i64* lo
     T ux = diff(p[2 * i], p[2 * h]), uy = diff(p[2 * i + 1], p[2 * h + 1]);
     T vx = diff(p[2 * k], p[2 * i]), vy = diff(p[2 * k + 1], p[2 * i + 1]);
     if constexpr (std::is_floating_point_v<T>) {
-      double l = ux * vy, r = uy * vx, det = l - r;
-      double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
-      pos += (det > bnd) & (bnd >= MINBOUND);
-      neg += (det < -bnd) & (bnd >= MINBOUND);
+      const int f = filter_sign(ux * vy, uy * vx);  // 0: undecided, neither count
+      pos += f > 0;
+      neg += f < 0;
     } else {
       i128 l = (i128)ux * vy, r = (i128)uy * vx;
       pos += l > r;
@@ -323,23 +323,8 @@ inline i64 merge_ids(const T* pa, const Norm& A, const T* pb, const Norm& B, Emi
       if (ha != hb) {
         step = ha ? 1 : -1;
       } else {
-        T ux = pa[2 * a1] - pa[2 * ai], uy = pa[2 * a1 + 1] - pa[2 * ai + 1];
-        T vx = pb[2 * b1] - pb[2 * bj], vy = pb[2 * b1 + 1] - pb[2 * bj + 1];
-        int d;
-        if constexpr (std::is_floating_point_v<T>) {
-          double l = ux * vy, r = uy * vx, det = l - r;
-          double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
-          if (det > bnd && bnd >= MINBOUND)
-            d = 1;
-          else if (-det > bnd && bnd >= MINBOUND)
-            d = -1;
-          else
-            d = cross_sign(pa[2 * ai], pa[2 * ai + 1], pa[2 * a1], pa[2 * a1 + 1], pb[2 * bj],
-                           pb[2 * bj + 1], pb[2 * b1], pb[2 * b1 + 1]);
-        } else {
-          i128 l = (i128)ux * vy, r = (i128)uy * vx;
-          d = (l > r) - (l < r);
-        }
+        const int d = cross_sign(pa[2 * ai], pa[2 * ai + 1], pa[2 * a1], pa[2 * a1 + 1],
+                                 pb[2 * bj], pb[2 * bj + 1], pb[2 * b1], pb[2 * b1 + 1]);
         c = (std::int8_t)d;
         step = -d;
       }

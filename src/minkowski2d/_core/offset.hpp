@@ -112,7 +112,7 @@ inline int sign_of(F&& f) {
 }
 
 // orientation of (a, b, c): +1 counter-clockwise
-inline int orient(Pt a, Pt b, Pt c) { return cross_sign(a.x, a.y, b.x, b.y, a.x, a.y, c.x, c.y); }
+inline int orient(Pt a, Pt b, Pt c) { return mk::orient(a.x, a.y, b.x, b.y, c.x, c.y); }
 
 // sign of (b - a) . (d - c)
 inline int dot_sign(Pt a, Pt b, Pt c, Pt d) {

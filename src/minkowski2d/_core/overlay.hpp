@@ -90,7 +90,7 @@ inline T cross(const T& ax, const T& ay, const T& bx, const T& by) {
 // sign of (q - p) x (r - p)
 inline int orient(const P& p, const P& q, const P& r) {
   if (plain(p) && plain(q) && plain(r))
-    return cross_sign(p.x.hi, p.y.hi, q.x.hi, q.y.hi, p.x.hi, p.y.hi, r.x.hi, r.y.hi);
+    return mk::orient(p.x.hi, p.y.hi, q.x.hi, q.y.hi, r.x.hi, r.y.hi);
   FE f = cross(fe(q.x) - fe(p.x), fe(q.y) - fe(p.y), fe(r.x) - fe(p.x), fe(r.y) - fe(p.y));
   int s = fe_sign(f);
   if (s != UNSURE) return s;
@@ -1341,7 +1341,7 @@ class Overlay {
     const LLine& L = ll_[i];
     const LVert& V = lv_[v];
     if (L.plain && V.plain)
-      return cross_sign(L.ax.v, L.ay.v, L.bx.v, L.by.v, L.ax.v, L.ay.v, V.x.v, V.y.v);
+      return mk::orient(L.ax.v, L.ay.v, L.bx.v, L.by.v, V.x.v, V.y.v);
     int s = fe_sign(cross(L.bx - L.ax, L.by - L.ay, V.x - L.ax, V.y - L.ay));
     if (s != UNSURE) return s;
     return g_.side(ed_[i].line, v < (i64)vg_.size() ? vg_[v] : av_[v]);
@@ -1826,7 +1826,7 @@ inline bool valid_rounded(const Rings& r) {
   auto Y = [&](i64 i) { return r.xy[2 * i + 1]; };
   auto same = [&](i64 a, i64 b) { return X(a) == X(b) && Y(a) == Y(b); };
   auto orient = [&](i64 a, i64 b, i64 c) {
-    return cross_sign(X(a), Y(a), X(b), Y(b), X(a), Y(a), X(c), Y(c));
+    return mk::orient(X(a), Y(a), X(b), Y(b), X(c), Y(c));
   };
   // directions v -> a in angle order
   auto angle_less = [&](i64 v, i64 a, i64 b) {

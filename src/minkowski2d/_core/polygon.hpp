@@ -106,7 +106,7 @@ struct Work {
   bool same(i64 i, i64 j) const { return X(i) == X(j) && Y(i) == Y(j); }
   bool lexless(i64 i, i64 j) const { return Y(i) < Y(j) || (Y(i) == Y(j) && X(i) < X(j)); }
   int orient(i64 a, i64 b, i64 c) const {
-    return cross_sign(X(a), Y(a), X(b), Y(b), X(a), Y(a), X(c), Y(c));
+    return mk::orient(X(a), Y(a), X(b), Y(b), X(c), Y(c));
   }
   // orient on point ids; a repeated point is straight at once (the filter cannot certify
   // an exact zero: the exact fallback would decide every "v is an end of e")
