@@ -204,6 +204,21 @@ struct GridScratch {
   std::vector<i64> reg_start, reg_cell, cell_start, cell_edge, stamp;
 };
 
+// segment_pairs' inverse of its registrations: the segments of each of the nc cells,
+// ascending (CSR: s.cell_start, s.cell_edge), from s.reg_start and s.reg_cell.
+inline void grid_cells(i64 n, i64 nc, GridScratch& s) {
+  const i64 nr = (i64)s.reg_cell.size();
+  s.cell_start.assign(nc + 1, 0);
+  for (i64 k = 0; k < nr; ++k) ++s.cell_start[s.reg_cell[k] + 1];
+  for (i64 c = 0; c < nc; ++c) s.cell_start[c + 1] += s.cell_start[c];
+  s.cell_edge.resize(nr);
+  std::vector<i64>& fill = s.stamp;  // reused by segment_pairs as the stamps
+  fill.assign(s.cell_start.begin(), s.cell_start.end() - 1);
+  for (i64 i = 0; i < n; ++i)
+    for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k)
+      s.cell_edge[fill[s.reg_cell[k]]++] = i;
+}
+
 // Candidate pairs of segments by a uniform grid: segment i runs from (ax, ay) to (bx, by)
 // up to tol[i] in each coordinate (the exact segment lies in the approximate one widened
 // by a square of half-side tol[i]); it is registered in every cell its widened row spans
@@ -304,19 +319,7 @@ inline bool segment_pairs(i64 n, const double* ax, const double* ay, const doubl
     }
     s.reg_start[i + 1] = (i64)s.reg_cell.size();
   }
-  // cell -> segments, ascending
-  const i64 nc = nx * ny, nr = (i64)s.reg_cell.size();
-  s.cell_start.assign(nc + 1, 0);
-  for (i64 k = 0; k < nr; ++k) ++s.cell_start[s.reg_cell[k] + 1];
-  for (i64 c = 0; c < nc; ++c) s.cell_start[c + 1] += s.cell_start[c];
-  s.cell_edge.resize(nr);
-  {
-    std::vector<i64>& fill = s.stamp;  // reused below as the stamps
-    fill.assign(s.cell_start.begin(), s.cell_start.end() - 1);
-    for (i64 i = 0; i < n; ++i)
-      for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k)
-        s.cell_edge[fill[s.reg_cell[k]]++] = i;
-  }
+  grid_cells(n, nx * ny, s);  // cell -> segments, ascending
   s.stamp.assign(n, -1);
   double checks = 0, hits = 0;
   for (i64 i = 0; i < n; ++i) {
