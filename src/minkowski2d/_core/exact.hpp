@@ -11,7 +11,7 @@
 //    from a fixed-point (Kulisch) accumulator that holds the 8 exact products
 //    a_i * b_j of the expanded determinant at every magnitude -- no range limit, no rescale.
 //
-// One filter (filter_sign) and one fallback (cross_sign_slow) serve every orientation
+// One filter (filter_count, filter_sign) and one fallback (cross_sign_slow) serve every orientation
 // sign: cross_sign, its point and index forms orient, and convex.hpp's turn pass.
 // The expansion arithmetic below (two_sum, two_diff, two_prod, grow) is the one copy of
 // the error-free transformations: the Sterbenz stage of cross_sign's fallback and the
@@ -287,15 +287,23 @@ inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, doub
   return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
 }
 
-// The float filter of every orientation sign: the sign of l - r, for the products
-// l = ux vy and r = uy vx of the rounded coordinate differences, when Shewchuk's bound
-// ERRBOUND (|l| + |r|) certifies it and no product underflowed (the bound is at least
-// MINBOUND); 0 when it cannot tell (near zero, tiny, inf or NaN: never "zero"). Branch-free,
-// so loops over it vectorize (convex.hpp's turn pass).
-[[gnu::always_inline]] inline int filter_sign(double l, double r) {
+// The float filter of every orientation sign, for the products l = ux vy and r = uy vx
+// of the rounded coordinate differences: l - r is certified positive (pos += 1) or
+// negative (neg += 1) when Shewchuk's bound ERRBOUND (|l| + |r|) says so and no product
+// underflowed (the bound is at least MINBOUND); neither when it cannot tell (near zero,
+// tiny, inf or NaN: never "zero"). Branch-free counts, so loops over it vectorize
+// (convex.hpp's turn pass).
+template <class C>
+[[gnu::always_inline]] inline void filter_count(double l, double r, C& pos, C& neg) {
   const double det = l - r, bound = ERRBOUND * (std::fabs(l) + std::fabs(r));
-  const bool ok = bound >= MINBOUND;  // false for NaN; inf bounds never certify below
-  return (int)((det > bound) & ok) - (int)((-det > bound) & ok);
+  pos += (det > bound) & (bound >= MINBOUND);  // false for NaN; inf bounds never certify
+  neg += (det < -bound) & (bound >= MINBOUND);
+}
+// the same as a sign: +1 / -1 when certified, 0 when the filter cannot tell
+[[gnu::always_inline]] inline int filter_sign(double l, double r) {
+  int pos = 0, neg = 0;
+  filter_count(l, r, pos, neg);
+  return pos - neg;
 }
 
 // Exact sign of (a1 - a0) x (b1 - b0) for finite doubles: filter_sign, then
