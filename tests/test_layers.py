@@ -171,6 +171,122 @@ def test_modules_and_functions_are_small():
     assert not big, big
 
 
+CORE = PKG / "_core"
+#: Core files not yet moved onto the size rule: another branch of the same round splits
+#: them (collision, navigation mesh and network, planning, the module's bindings); the
+#: merge of both empties this set.
+CPP_NOT_YET: set[str] = {
+    "bind.hpp",
+    "collision.cpp",
+    "collision.hpp",
+    "module.cpp",
+    "navmesh.cpp",
+    "navmesh.hpp",
+    "navnet.hpp",
+    "planning.cpp",
+    "planning.hpp",
+}
+
+
+def _cpp_blank(text: str) -> str:
+    """The C++ text with comments, string and character literals and preprocessor lines
+    blanked (newlines kept, so line numbers stay)."""
+    out = list(text)
+    i, n = 0, len(text)
+
+    def blank(a: int, b: int) -> None:
+        for k in range(a, b):
+            if out[k] != "\n":
+                out[k] = " "
+
+    while i < n:
+        c = text[i]
+        if text.startswith("//", i) or (
+            c == "#" and text[text.rfind("\n", 0, i) + 1 : i].strip() == ""
+        ):
+            j = text.find("\n", i)
+            j = n if j < 0 else j
+            blank(i, j)
+            i = j
+        elif text.startswith("/*", i):
+            j = text.index("*/", i + 2) + 2
+            blank(i, j)
+            i = j
+        elif c == '"' or (c == "'" and not text[i - 1].isalnum()):
+            j = i + 1
+            while text[j] != c:
+                j += 2 if text[j] == "\\" else 1
+            blank(i + 1, j)
+            i = j + 1
+        else:
+            i += 1
+    return "".join(out)
+
+
+_SIGNATURE_END = re.compile(r"\)\s*(const|noexcept|override|final|mutable|->[^;{}]*|\s)*$")
+
+
+def _cpp_functions(text: str):
+    """(name, lines) of every function defined at namespace or class scope: the lines from
+    its opening brace to its closing one (lambdas and local classes inside count toward
+    it). A brace-matching scan: a '{' at namespace/class scope opens a function when the
+    code before it ends with ')' (and qualifiers), a scope after namespace/struct/class/
+    union, anything else (an enum, an initializer) a block that is skipped."""
+    code = _cpp_blank(text)
+    stack: list[tuple[str, int, str]] = []  # (kind, line of the brace, name)
+    line, last = 1, 0
+    for i, c in enumerate(code):
+        if c == "\n":
+            line += 1
+        elif c == "{":
+            head = " ".join(code[last:i].split())
+            at_scope = all(kind == "scope" for kind, _, _ in stack)
+            if not at_scope or re.search(r"\benum\b", head):
+                stack.append(("block", line, ""))
+            elif _SIGNATURE_END.search(head):
+                name = re.findall(r"([~\w:]+(?:\s*operator\s*\S+?)?)\s*\(", head)
+                stack.append(("function", line, name[0] if name else head[-40:]))
+            elif re.search(r"\b(namespace|struct|class|union)\b", head):
+                stack.append(("scope", line, ""))
+            else:
+                stack.append(("block", line, ""))
+            last = i + 1
+        elif c == "}":
+            kind, start, name = stack.pop()
+            if kind == "function":
+                yield name, line - start + 1
+            last = i + 1
+        elif c == ";":
+            last = i + 1
+    assert not stack, "unbalanced braces"
+
+
+def test_core_files_and_functions_are_small():
+    files = sorted(p for p in CORE.iterdir() if p.suffix in (".hpp", ".cpp"))
+    assert len(files) > 20, files
+    big = []
+    for p in files:
+        if p.name in CPP_NOT_YET:
+            continue
+        text = p.read_text()
+        if len(text.splitlines()) > MAX_MODULE_LINES:
+            big.append((p.name, len(text.splitlines())))
+        for name, n in _cpp_functions(text):
+            if n > MAX_FUNCTION_LINES:
+                big.append((f"{p.name}:{name}", n))
+    assert not big, big
+
+
+def test_the_core_scan_finds_functions():
+    # the scan sees a long function, a method, a template and skips enums and literals
+    src = (
+        "namespace mk {\nenum E { A, B };\nstruct S {\n  int f(int a) const {\n"
+        + '    auto g = [&]() { return "}"; };\n' * 3
+        + "    return a;\n  }\n};\ntemplate <class T>\ninline T h(T x) { return x; }\n}\n"
+    )
+    assert list(_cpp_functions(src)) == [("f", 6), ("h", 1)]
+
+
 def test_the_command_line_is_one_package_without_a_circle():
     loose = [name for name, _ in _modules() if re.match(r"_cli_|animation/cli", name)]
     assert not loose, loose

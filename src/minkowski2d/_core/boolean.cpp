@@ -18,6 +18,7 @@
 
 #include "bind.hpp"
 #include "boolean.hpp"
+#include "parallel.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -68,7 +69,7 @@ nb::tuple boolean_f(In2<double> AX, In1<i64> ARO, In1<i64> APO, In1<i64> ATO, In
   mk::bop::Limits lim{max_crossings, max_pairs};
   {
     nb::gil_scoped_release nogil;
-    mk::bop::for_tasks(T, threads, [&](i64 t) {
+    mk::parallel_tasks(T, threads, [&](i64 t) {
       mk::bop::Polys a{AX.data(), ARO.data(), APO.data(), ATO.data()[t], ATO.data()[t + 1]};
       mk::bop::Polys b{BX.data(), BRO.data(), BPO.data(), BTO.data()[t], BTO.data()[t + 1]};
       mk::bop::boolean(a, b, rule, validate, lim, res[t], faults[t]);
@@ -138,7 +139,7 @@ nb::tuple clip_lines_f(In2<double> LX, In1<i64> LO, In1<i64> LT, In2<double> AX,
   mk::bop::Limits lim{max_crossings, max_pairs};
   {
     nb::gil_scoped_release nogil;
-    mk::bop::for_tasks(T, threads, [&](i64 t) {
+    mk::parallel_tasks(T, threads, [&](i64 t) {
       mk::bop::Polys a{AX.data(), ARO.data(), APO.data(), ATO.data()[t], ATO.data()[t + 1]};
       status[t] = mk::bop::clip(LX.data(), LO.data(), LT.data()[t], LT.data()[t + 1], a, fill,
                                 validate, keep_inside, lim, xy[t], off[t], faults[t]);

@@ -14,9 +14,7 @@
 #pragma once
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
-#include <thread>
 #include <vector>
 
 #include "exact.hpp"
@@ -94,8 +92,8 @@ inline void add_polys(ov::Geo& g, const Polys& a, const std::vector<int>& w, std
 }
 
 struct Limits {
-  i64 max_crossings = (i64)1 << 62;
-  i64 max_pairs = (i64)1 << 62;
+  i64 max_crossings = NO_LIMIT;
+  i64 max_pairs = NO_LIMIT;
 };
 
 // One boolean: a (layer 0) op b (layer 1) under the rule (ov::make_rule), or, when b has
@@ -159,24 +157,6 @@ inline int clip(const double* lxy, const i64* loff, i64 l0, i64 l1, const Polys&
   o.max_crossings = lim.max_crossings;
   o.max_pairs = lim.max_pairs;
   return o.run_lines(in, ov::make_rule(ov::UNION, fill), keep_inside, xy, off);
-}
-
-// runs work(t) for t in [0, n) on up to `threads` threads (an atomic counter hands out
-// the tasks, so a few large ones do not leave threads idle)
-template <class F>
-void for_tasks(i64 n, int threads, F&& work) {
-  const int nt = (int)std::max<i64>(1, std::min<i64>(threads, n));
-  if (nt <= 1) {
-    for (i64 t = 0; t < n; ++t) work(t);
-    return;
-  }
-  std::atomic<i64> next{0};
-  auto run = [&]() {
-    for (i64 t; (t = next.fetch_add(1)) < n;) work(t);
-  };
-  std::vector<std::thread> pool;
-  for (int k = 0; k < nt; ++k) pool.emplace_back(run);
-  for (auto& th : pool) th.join();
 }
 
 }  // namespace bop

@@ -38,6 +38,16 @@ inline double next_up(double x) {
 }
 inline double next_down(double x) { return -next_up(-x); }
 
+// The slack of a span computed in double near coordinates of magnitude M: the part of a
+// segment within a band of rows (a clip by interpolation, a few roundings) and the cells
+// it reaches are widened by this much, far more than their rounding errors (a few ulps of
+// M, 2^-52 M each) and than the low part of a DD coordinate (half an ulp); the 1e-300
+// keeps it positive at M = 0. Used only to gather candidates (cells, segment pairs, edges
+// to test) for exact tests, where a wider span only adds candidates: the grid of
+// segment_pairs and the coverage test of union.hpp (which widened by 1e-14 M before; the
+// larger of the two is safe for both).
+inline double span_slack(double M) { return 1e-12 * M + 1e-300; }
+
 template <class F, class C = double>
 void box_pairs(i64 n, const C* xmin, const C* xmax, const C* ymin, const C* ymax, F&& on_pair) {
   if (n < 2) return;
@@ -194,6 +204,21 @@ struct GridScratch {
   std::vector<i64> reg_start, reg_cell, cell_start, cell_edge, stamp;
 };
 
+// segment_pairs' inverse of its registrations: the segments of each of the nc cells,
+// ascending (CSR: s.cell_start, s.cell_edge), from s.reg_start and s.reg_cell.
+inline void grid_cells(i64 n, i64 nc, GridScratch& s) {
+  const i64 nr = (i64)s.reg_cell.size();
+  s.cell_start.assign(nc + 1, 0);
+  for (i64 k = 0; k < nr; ++k) ++s.cell_start[s.reg_cell[k] + 1];
+  for (i64 c = 0; c < nc; ++c) s.cell_start[c + 1] += s.cell_start[c];
+  s.cell_edge.resize(nr);
+  std::vector<i64>& fill = s.stamp;  // reused by segment_pairs as the stamps
+  fill.assign(s.cell_start.begin(), s.cell_start.end() - 1);
+  for (i64 i = 0; i < n; ++i)
+    for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k)
+      s.cell_edge[fill[s.reg_cell[k]]++] = i;
+}
+
 // Candidate pairs of segments by a uniform grid: segment i runs from (ax, ay) to (bx, by)
 // up to tol[i] in each coordinate (the exact segment lies in the approximate one widened
 // by a square of half-side tol[i]); it is registered in every cell its widened row spans
@@ -271,7 +296,7 @@ inline bool segment_pairs(i64 n, const double* ax, const double* ay, const doubl
     }
     const double M = std::max(std::max(std::fabs(px), std::fabs(qx)),
                               std::max(std::fabs(py), std::fabs(qy)));
-    const double t = tol[i] + 1e-12 * M + 1e-300;
+    const double t = tol[i] + span_slack(M);
     const i64 r0 = cy_lo(py - t), r1 = cy_hi(qy + t);
     for (i64 r = r0; r <= r1; ++r) {
       double xl, xh;
@@ -294,19 +319,7 @@ inline bool segment_pairs(i64 n, const double* ax, const double* ay, const doubl
     }
     s.reg_start[i + 1] = (i64)s.reg_cell.size();
   }
-  // cell -> segments, ascending
-  const i64 nc = nx * ny, nr = (i64)s.reg_cell.size();
-  s.cell_start.assign(nc + 1, 0);
-  for (i64 k = 0; k < nr; ++k) ++s.cell_start[s.reg_cell[k] + 1];
-  for (i64 c = 0; c < nc; ++c) s.cell_start[c + 1] += s.cell_start[c];
-  s.cell_edge.resize(nr);
-  {
-    std::vector<i64>& fill = s.stamp;  // reused below as the stamps
-    fill.assign(s.cell_start.begin(), s.cell_start.end() - 1);
-    for (i64 i = 0; i < n; ++i)
-      for (i64 k = s.reg_start[i]; k < s.reg_start[i + 1]; ++k)
-        s.cell_edge[fill[s.reg_cell[k]]++] = i;
-  }
+  grid_cells(n, nx * ny, s);  // cell -> segments, ascending
   s.stamp.assign(n, -1);
   double checks = 0, hits = 0;
   for (i64 i = 0; i < n; ++i) {

@@ -2,7 +2,8 @@
 //
 // One normalization and one merge serve the single call, the batch, the trace and the
 // collision walks. Polygons are (n, 2) row-major coordinate arrays of T (int64_t with
-// |x| < 2^62, or finite double); every decision goes through mk::cross_sign.
+// |x| < 2^62, or finite double); every decision goes through exact.hpp (cross_sign and
+// orient; the turn pass counts the turns filter_sign certifies, the others go exact).
 #pragma once
 
 #include <algorithm>
@@ -130,10 +131,7 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp, i64* lo
     T ux = diff(p[2 * i], p[2 * h]), uy = diff(p[2 * i + 1], p[2 * h + 1]);
     T vx = diff(p[2 * k], p[2 * i]), vy = diff(p[2 * k + 1], p[2 * i + 1]);
     if constexpr (std::is_floating_point_v<T>) {
-      double l = ux * vy, r = uy * vx, det = l - r;
-      double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
-      pos += (det > bnd) & (bnd >= MINBOUND);
-      neg += (det < -bnd) & (bnd >= MINBOUND);
+      filter_count(ux * vy, uy * vx, pos, neg);  // undecided: neither counts
     } else {
       i128 l = (i128)ux * vy, r = (i128)uy * vx;
       pos += l > r;
@@ -163,6 +161,29 @@ inline int fast_check(const T* p, i64 lo, i64 hi, i64* bad, u64* maxexp, i64* lo
   return 0;
 }
 
+// normalize's other common case: p[lo:hi] strictly convex, turning s (clockwise: -1) at
+// every vertex; the bottom-most vertex, and the split by binary search (the halves run
+// upper...upper lower...lower from it).
+template <class T>
+inline void normalize_strict(const T* p, i64 lo, i64 hi, int s, Norm& r) {
+  i64 n = hi - lo, b = lo;
+  for (i64 i = lo + 1; i < hi; ++i)
+    if (p[2 * i + 1] < p[2 * b + 1] || (p[2 * i + 1] == p[2 * b + 1] && p[2 * i] < p[2 * b]))
+      b = i;
+  r.k = n;
+  r.b = b;
+  r.step = s;
+  i64 t0 = 0, t1 = n - 1;
+  while (t0 < t1) {
+    i64 tm = (t0 + t1) / 2;
+    if (upper(p, r.at(tm), r.at(tm + 1)))
+      t0 = tm + 1;
+    else
+      t1 = tm;
+  }
+  r.split = t0;
+}
+
 // Normalize the convex polygon p[lo:hi] (any orientation and start). keep (i64) and turn
 // (int8) are scratch of size >= hi - lo; out receives the vertex indices unless the
 // common case held (then step != 0 and out is not written).
@@ -189,23 +210,7 @@ inline Norm normalize(const T* p, i64 lo, i64 hi, i64* keep, std::int8_t* turn, 
     return r;
   }
   if (s != 0) {
-    i64 n = hi - lo, b = lo;
-    for (i64 i = lo + 1; i < hi; ++i)
-      if (p[2 * i + 1] < p[2 * b + 1] || (p[2 * i + 1] == p[2 * b + 1] && p[2 * i] < p[2 * b]))
-        b = i;
-    r.k = n;
-    r.b = b;
-    r.step = s;
-    // halves run upper...upper lower...lower from the bottom vertex: binary search
-    i64 t0 = 0, t1 = n - 1;
-    while (t0 < t1) {
-      i64 tm = (t0 + t1) / 2;
-      if (upper(p, r.at(tm), r.at(tm + 1)))
-        t0 = tm + 1;
-      else
-        t1 = tm;
-    }
-    r.split = t0;
+    normalize_strict(p, lo, hi, s, r);
     return r;
   }
   i64 m = 0;
@@ -327,13 +332,8 @@ inline i64 merge_ids(const T* pa, const Norm& A, const T* pb, const Norm& B, Emi
         T vx = pb[2 * b1] - pb[2 * bj], vy = pb[2 * b1 + 1] - pb[2 * bj + 1];
         int d;
         if constexpr (std::is_floating_point_v<T>) {
-          double l = ux * vy, r = uy * vx, det = l - r;
-          double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
-          if (det > bnd && bnd >= MINBOUND)
-            d = 1;
-          else if (-det > bnd && bnd >= MINBOUND)
-            d = -1;
-          else
+          d = filter_sign(ux * vy, uy * vx);  // the certified fallback when it cannot tell
+          if (d == 0)
             d = cross_sign(pa[2 * ai], pa[2 * ai + 1], pa[2 * a1], pa[2 * a1 + 1], pb[2 * bj],
                            pb[2 * bj + 1], pb[2 * b1], pb[2 * b1 + 1]);
         } else {

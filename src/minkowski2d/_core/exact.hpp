@@ -11,9 +11,13 @@
 //    from a fixed-point (Kulisch) accumulator that holds the 8 exact products
 //    a_i * b_j of the expanded determinant at every magnitude -- no range limit, no rescale.
 //
-// The expansion arithmetic below (two_sum, two_prod, grow) is used where an exact *value*
-// is needed (collision witnesses); it is exact while every nonzero |coordinate| lies in
-// [2^-400, 2^400] (see in_expansion_range). This file must be compiled without
+// One filter (filter_count, filter_sign) and one fallback (cross_sign_slow) serve every orientation
+// sign: cross_sign, its point and index forms orient, and convex.hpp's turn pass.
+// The expansion arithmetic below (two_sum, two_diff, two_prod, grow) is the one copy of
+// the error-free transformations: the Sterbenz stage of cross_sign's fallback and the
+// places where an exact *value* is needed (collision witnesses, the overlay's DD points);
+// it is exact while every nonzero |coordinate| lies in [2^-400, 2^400] (see
+// in_expansion_range). This file must be compiled without
 // -ffast-math and with -ffp-contract=off: a fused multiply-add breaks the error-free
 // transformations (tests/test_core.py checks the built module).
 #pragma once
@@ -71,6 +75,9 @@ constexpr double ERRBOUND = (3.0 + 16.0 * EPS) * EPS;          // Shewchuk's ccw
 constexpr double MINBOUND = ERRBOUND * 0x1p-960;
 // int64 coordinates must satisfy |x| < INT_LIMIT for the __int128 cross products.
 constexpr i64 INT_LIMIT = (i64)1 << 62;
+// "no limit" for the work budgets (crossings, candidate pairs, segments): a count no run
+// reaches (the same value as INT_LIMIT, a different meaning).
+constexpr i64 NO_LIMIT = (i64)1 << 62;
 // ints with |x| <= FLOAT_EXACT_INT convert to float64 exactly (2^53).
 constexpr i64 FLOAT_EXACT_INT = (i64)1 << 53;
 constexpr double SPLITTER = 134217729.0;  // 2^27 + 1
@@ -171,6 +178,46 @@ inline void add_product(Acc& P, Acc& N, double x, double y, bool negate) {
 
 }  // namespace detail
 
+// ------------------------------------------------------------------------------------
+// Error-free transformations and expansions (exact within [X_LO, X_HI], see above).
+
+inline void two_sum(double a, double b, double& x, double& y) {
+  x = a + b;
+  double bv = x - a, av = x - bv;
+  y = (a - av) + (b - bv);
+}
+
+inline void two_diff(double a, double b, double& x, double& y) {
+  x = a - b;
+  double bv = a - x, av = x + bv;
+  y = (a - av) + (bv - b);
+}
+
+inline void two_prod(double a, double b, double& x, double& y) {
+  x = a * b;
+  double c = SPLITTER * a;
+  double ahi = c - (c - a), alo = a - ahi;
+  c = SPLITTER * b;
+  double bhi = c - (c - b), blo = b - bhi;
+  double err = ((x - ahi * bhi) - alo * bhi) - ahi * blo;
+  y = alo * blo - err;
+}
+
+// Add b to the nonoverlapping expansion e[0:m] in place (zero-eliminating); new length.
+inline int grow(double* e, int m, double b) {
+  double q = b, hh;
+  int h = 0;
+  for (int k = 0; k < m; ++k) {
+    two_sum(q, e[k], q, hh);
+    if (hh != 0.0) e[h++] = hh;
+  }
+  if (q != 0.0 || h == 0) e[h++] = q;
+  return h;
+}
+
+// ------------------------------------------------------------------------------------
+// The orientation sign: the filter, its certified fallback, the point and index forms.
+
 // Exact sign of (a1 - a0) x (b1 - b0) for finite doubles, at any magnitude.
 inline int cross_sign_exact(double a0x, double a0y, double a1x, double a1y, double b0x,
                             double b0y, double b1x, double b1y) {
@@ -199,53 +246,34 @@ inline int cross_sign_exact(double a0x, double a0y, double a1x, double a1y, doub
 inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, double b0x,
                             double b0y, double b1x, double b1y, double ux, double uy, double vx,
                             double vy) {
-  auto exact_diff = [](double a, double b, double d) {
-    double bv = a - d, av = d + bv;
-    return (a - av) + (bv - b) == 0.0;
+  auto exact_diff = [](double a, double b) {  // is a - b a double (a zero two_diff tail)?
+    double x, y;
+    two_diff(a, b, x, y);
+    return y == 0.0;
   };
   auto in_range = [](double d) {
     double m = std::fabs(d);
     return m >= 0x1p-450 && m <= 0x1p450;
   };
   if (!(in_range(ux) && in_range(uy) && in_range(vx) && in_range(vy))) return 2;
-  if (!(exact_diff(a1x, a0x, ux) && exact_diff(a1y, a0y, uy) && exact_diff(b1x, b0x, vx) &&
-        exact_diff(b1y, b0y, vy)))
+  if (!(exact_diff(a1x, a0x) && exact_diff(a1y, a0y) && exact_diff(b1x, b0x) &&
+        exact_diff(b1y, b0y)))
     return 2;
-  auto prod_tail = [](double a, double b, double p) {
-    double c = SPLITTER * a;
-    double ahi = c - (c - a), alo = a - ahi;
-    c = SPLITTER * b;
-    double bhi = c - (c - b), blo = b - bhi;
-    double err = ((p - ahi * bhi) - alo * bhi) - ahi * blo;
-    return alo * blo - err;
-  };
-  auto tsum = [](double a, double b, double& x, double& y) {
-    x = a + b;
-    double bv = x - a, av = x - bv;
-    y = (a - av) + (b - bv);
-  };
-  const double l = ux * vy, r = uy * vx;
-  const double lt = prod_tail(ux, vy, l), rt = prod_tail(uy, vx, r);
+  double l, r, lt, rt;
+  two_prod(ux, vy, l, lt);
+  two_prod(uy, vx, r, rt);
   if (lt == 0.0 && rt == 0.0) return (l > r) - (l < r);
   // e = l - r as a nonoverlapping expansion, then + lt, then - rt (grow, zeros dropped)
   double e[4];
   int m = 0;
   {
     double x, y;
-    tsum(l, -r, x, y);
+    two_sum(l, -r, x, y);
     if (y != 0.0) e[m++] = y;
     if (x != 0.0 || m == 0) e[m++] = x;
   }
-  for (double b : {lt, -rt}) {
-    double q = b, hh;
-    int h = 0;
-    for (int k = 0; k < m; ++k) {
-      tsum(q, e[k], q, hh);
-      if (hh != 0.0) e[h++] = hh;
-    }
-    if (q != 0.0 || h == 0) e[h++] = q;
-    m = h;
-  }
+  m = grow(e, m, lt);
+  m = grow(e, m, -rt);
   const double top = e[m - 1];
   return (top > 0) - (top < 0);
 }
@@ -259,6 +287,27 @@ inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, doub
   return cross_sign_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
 }
 
+// The float filter of every orientation sign, for the products l = ux vy and r = uy vx
+// of the rounded coordinate differences: l - r is certified positive (pos += 1) or
+// negative (neg += 1) when Shewchuk's bound ERRBOUND (|l| + |r|) says so and no product
+// underflowed (the bound is at least MINBOUND); neither when it cannot tell (near zero,
+// tiny, inf or NaN: never "zero"). Branch-free counts, so loops over it vectorize
+// (convex.hpp's turn pass).
+template <class C>
+[[gnu::always_inline]] inline void filter_count(double l, double r, C& pos, C& neg) {
+  const double det = l - r, bound = ERRBOUND * (std::fabs(l) + std::fabs(r));
+  pos += (det > bound) & (bound >= MINBOUND);  // false for NaN; inf bounds never certify
+  neg += (det < -bound) & (bound >= MINBOUND);
+}
+// the same as a sign: +1 / -1 when certified, 0 when the filter cannot tell
+[[gnu::always_inline]] inline int filter_sign(double l, double r) {
+  int pos = 0, neg = 0;
+  filter_count(l, r, pos, neg);
+  return pos - neg;
+}
+
+// Exact sign of (a1 - a0) x (b1 - b0) for finite doubles: filter_sign, then
+// cross_sign_slow when it cannot tell.
 [[gnu::always_inline]] inline int cross_sign(double a0x, double a0y, double a1x, double a1y,
                                              double b0x, double b0y, double b1x, double b1y) {
   double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
@@ -266,12 +315,7 @@ inline int cross_sign_small(double a0x, double a0y, double a1x, double a1y, doub
   // difference (also when it overflows to +-inf); a product with a zero factor is zero.
   if (ux == 0.0 || vy == 0.0) return -(sgn(uy) * sgn(vx));
   if (uy == 0.0 || vx == 0.0) return sgn(ux) * sgn(vy);
-  double l = ux * vy, r = uy * vx, det = l - r;
-  double bound = ERRBOUND * (std::fabs(l) + std::fabs(r));
-  if (bound >= MINBOUND) {  // false for NaN; inf bounds never certify below
-    if (det > bound) return 1;
-    if (-det > bound) return -1;
-  }
+  if (int s = filter_sign(ux * vy, uy * vx)) return s;
   return cross_sign_slow(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y, ux, uy, vx, vy);
 }
 
@@ -370,43 +414,6 @@ inline int incircle(double ax, double ay, double bx, double by, double cx, doubl
   return incircle_exact(ax, ay, bx, by, cx, cy, dx, dy);
 }
 
-// ------------------------------------------------------------------------------------
-// Error-free transformations and expansions (exact within [X_LO, X_HI], see above).
-
-inline void two_sum(double a, double b, double& x, double& y) {
-  x = a + b;
-  double bv = x - a, av = x - bv;
-  y = (a - av) + (b - bv);
-}
-
-inline void two_diff(double a, double b, double& x, double& y) {
-  x = a - b;
-  double bv = a - x, av = x + bv;
-  y = (a - av) + (bv - b);
-}
-
-inline void two_prod(double a, double b, double& x, double& y) {
-  x = a * b;
-  double c = SPLITTER * a;
-  double ahi = c - (c - a), alo = a - ahi;
-  c = SPLITTER * b;
-  double bhi = c - (c - b), blo = b - bhi;
-  double err = ((x - ahi * bhi) - alo * bhi) - ahi * blo;
-  y = alo * blo - err;
-}
-
-// Add b to the nonoverlapping expansion e[0:m] in place (zero-eliminating); new length.
-inline int grow(double* e, int m, double b) {
-  double q = b, hh;
-  int h = 0;
-  for (int k = 0; k < m; ++k) {
-    two_sum(q, e[k], q, hh);
-    if (hh != 0.0) e[h++] = hh;
-  }
-  if (q != 0.0 || h == 0) e[h++] = q;
-  return h;
-}
-
 // (a1 - a0) x (b1 - b0) exactly into e (size >= 40), smallest component first.
 inline int cross_expansion(double* e, double a0x, double a0y, double a1x, double a1y,
                            double b0x, double b0y, double b1x, double b1y) {
@@ -450,12 +457,19 @@ inline bool fp_contract_off_selftest() {
   return detail::compare(P, N) == 0;
 }
 
-// Exact sign of the turn i -> j -> k of points in a flat (n, 2) coordinate array: the one
-// index form of cross_sign (convex, decompose and triangulate use it).
+// Exact sign of the turn a -> b -> c, (b - a) x (c - a): +1 counter-clockwise, -1
+// clockwise, 0 collinear (T: double or int64). The point form of cross_sign that every
+// orientation test of the core goes through.
+template <class T>
+inline int orient(T ax, T ay, T bx, T by, T cx, T cy) {
+  return cross_sign(ax, ay, bx, by, ax, ay, cx, cy);
+}
+
+// The same for the points i, j, k of a flat (n, 2) coordinate array (convex, decompose
+// and triangulate use it).
 template <class T>
 inline int orient(const T* p, i64 i, i64 j, i64 k) {
-  return cross_sign(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1], p[2 * i], p[2 * i + 1],
-                    p[2 * k], p[2 * k + 1]);
+  return orient(p[2 * i], p[2 * i + 1], p[2 * j], p[2 * j + 1], p[2 * k], p[2 * k + 1]);
 }
 
 }  // namespace mk

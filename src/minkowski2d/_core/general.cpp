@@ -4,15 +4,15 @@
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/tuple.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <atomic>
-#include <thread>
 #include <vector>
 
 #include "bind.hpp"
 #include "exact.hpp"
 #include "minkowski.hpp"
+#include "parallel.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -73,8 +73,6 @@ nb::tuple general_sums(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> OO,
   std::vector<std::int8_t> used(K, 0);
   {
     nb::gil_scoped_release nogil;
-    int nt = threads < 1 ? 1 : threads;
-    if (nt > K) nt = (int)(K > 0 ? K : 1);
     auto work = [&](i64 k0, i64 k1) {
       for (i64 k = k0; k < k1; ++k) {
         int u = 0;
@@ -86,23 +84,11 @@ nb::tuple general_sums(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> OO,
         used[k] = (std::int8_t)u;
       }
     };
-    if (nt == 1) {
-      work(0, K);
-    } else {
-      // interleaved blocks keep the threads busy when costs vary along the list
-      std::vector<std::thread> pool;
-      std::atomic<i64> next{0};
-      const i64 block = 4;
-      for (int t = 0; t < nt; ++t)
-        pool.emplace_back([&]() {
-          while (true) {
-            i64 k0 = next.fetch_add(block);
-            if (k0 >= K) break;
-            work(k0, std::min(K, k0 + block));
-          }
-        });
-      for (auto& th : pool) th.join();
-    }
+    // blocks of 4 pairs handed out to the next free thread keep the threads busy when
+    // costs vary along the list
+    const i64 block = 4;
+    mk::parallel_tasks((K + block - 1) / block, threads,
+                       [&](i64 b) { work(b * block, std::min(K, (b + 1) * block)); });
   }
   // concatenate
   std::vector<double> xy;

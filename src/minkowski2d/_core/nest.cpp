@@ -13,12 +13,12 @@
 #include <memory>
 #include <random>
 #include <utility>
-#include <thread>
 #include <vector>
 
 #include "bind.hpp"
 #include "exact.hpp"
 #include "nest.hpp"
+#include "parallel.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -209,13 +209,7 @@ class Nester {
         }
         ok[(std::size_t)t] = s.separate(deadline);
       };
-      if (nt == 1) {
-        work(0);
-      } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < nt; ++t) pool.emplace_back(work, t);
-        for (auto& th : pool) th.join();
-      }
+      mk::parallel_threads(nt, work);
     }
     long long moves = 0;
     for (auto& r : runs) moves += r->moves;

@@ -25,7 +25,6 @@
 #include <cstdint>
 #include <limits>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include "exact.hpp"
@@ -178,7 +177,7 @@ class Search {
         continue;
       }
       if (tx > std::max(ax, bx)) continue;  // the edge is left of t: no crossing, not on it
-      const int o = cross_sign(ax, ay, bx, by, ax, ay, tx, ty);
+      const int o = mk::orient(ax, ay, bx, by, tx, ty);
       if (o == 0) return 0.0;  // strictly between the endpoints' heights: on the edge
       // half-open rule: an upward edge counts when t is to its left
       if ((by > ay) == (o > 0)) inside = !inside;

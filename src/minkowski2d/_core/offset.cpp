@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <thread>
 #include <vector>
 
 #include "bind.hpp"
 #include "exact.hpp"
 #include "offset.hpp"
+#include "parallel.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -67,14 +67,7 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
         off.run(rings, un[g] != 0, dl[g], p, labels, res[(std::size_t)g]);
       }
     };
-    int nt = (int)std::max<i64>(1, std::min<i64>(threads, ng));
-    if (nt <= 1) {
-      work(0, ng);
-    } else {
-      std::vector<std::thread> pool;
-      for (int t = 0; t < nt; ++t) pool.emplace_back(work, ng * t / nt, ng * (t + 1) / nt);
-      for (auto& th : pool) th.join();
-    }
+    mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) { work(g0, g1); });
   }
   // concatenate, closing every ring
   i64 rows = 0, nrings = 0, npolys = 0;

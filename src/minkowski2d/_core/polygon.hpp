@@ -106,7 +106,7 @@ struct Work {
   bool same(i64 i, i64 j) const { return X(i) == X(j) && Y(i) == Y(j); }
   bool lexless(i64 i, i64 j) const { return Y(i) < Y(j) || (Y(i) == Y(j) && X(i) < X(j)); }
   int orient(i64 a, i64 b, i64 c) const {
-    return cross_sign(X(a), Y(a), X(b), Y(b), X(a), Y(a), X(c), Y(c));
+    return mk::orient(X(a), Y(a), X(b), Y(b), X(c), Y(c));
   }
   // orient on point ids; a repeated point is straight at once (the filter cannot certify
   // an exact zero: the exact fallback would decide every "v is an end of e")
@@ -323,6 +323,126 @@ struct Work {
     return between_rings(RINGS_CROSS, c);
   }
 
+  // The state of sweep() that its steps share.
+  struct SweepState {
+    std::vector<std::uint8_t> down;      // per edge: it runs from its upper end down
+    std::vector<i64> helper, mark, uf;   // monotone-partition helpers, marks, ring union-find
+    std::vector<std::uint8_t> is_merge;  // per edge: its helper is a merge vertex
+    std::vector<i64> lows, upper, ring_seen;  // per point: edges through / leaving it
+  };
+
+  // sweep() at point v: the edges of S.lows passing through v (not ending there) are
+  // split at v, unless their ring passes through v twice or has a corner there
+  Problem split_through(i64 v, SweepState& S, i64& ne) {
+    auto &down = S.down, &is_merge = S.is_merge;
+    auto &helper = S.helper, &mark = S.mark, &lows = S.lows, &upper = S.upper;
+    auto& ring_seen = S.ring_seen;
+    ring_seen.clear();
+    for (i64 e : lows) {
+      if (mark[e] == v) continue;
+      const i64 r = ering(e);
+      for (i64 q : ring_seen)  // the ring passes through v twice: it crosses itself
+        if (ering(q) == r) return problem(RING_CROSSES, std::max(ecorner[q], ecorner[e]));
+      ring_seen.push_back(e);
+      const i64 c = corner_of_ring(v, r);
+      if (c >= 0) {
+        // the ring runs back over itself (a spike) or touches one of its edges
+        if (cnext(ecorner[e]) == cprev(c)) return problem(RING_SPIKE, cprev(c));
+        if (ecorner[e] == cnext(c)) return problem(RING_SPIKE, cnext(c));
+        return problem(RING_TOUCHES, c);
+      }
+      // e keeps its lower part (it ends at v), a new edge f takes the upper part
+      const i64 f = ne++;
+      const bool dn = down[e];
+      const i64 top = ehi[e];
+      efrom.push_back(dn ? top : v);
+      eto.push_back(dn ? v : top);
+      ecorner.push_back(ecorner[e]);
+      if (dn) {
+        efrom[e] = v;
+      } else {
+        eto[e] = v;
+      }
+      ehi[e] = v;
+      elo.push_back(v);
+      ehi.push_back(top);
+      down.push_back(dn);
+      helper.push_back(-1);
+      is_merge.push_back(0);
+      mark.push_back(-1);
+      mark[e] = v;
+      for (i64 q = ioff[top]; q < ioff[top + 1]; ++q)
+        if (iedge[q] == e) iedge[q] = f;
+      upper.push_back(f);
+    }
+    return Problem();
+  }
+
+  // sweep() at a point v where more than two edges meet: out, in, out, in counter-
+  // clockwise (upper edges right to left, then the edges that ended here left to right);
+  // the rings touching here join in S.uf (a cycle means the interior is disconnected)
+  Problem around(i64 v, SweepState& S) {
+    auto &uf = S.uf, &lows = S.lows, &upper = S.upper, &ring_seen = S.ring_seen;
+    auto find = [&](i64 a) {
+      while (uf[a] != a) {
+        uf[a] = uf[uf[a]];
+        a = uf[a];
+      }
+      return a;
+    };
+    std::vector<i64> ccw(upper.rbegin(), upper.rend());
+    ccw.insert(ccw.end(), lows.begin(), lows.end());
+    const i64 d = (i64)ccw.size();
+    for (i64 t = 0; t < d; ++t) {
+      const i64 a = ccw[t], b = ccw[(t + 1) % d];
+      if ((efrom[a] == v) != (efrom[b] == v)) continue;
+      return between_rings(RINGS_CROSS, blame(v, std::vector<i64>{a, b}));
+    }
+    ring_seen.clear();
+    for (i64 e : ccw) ring_seen.push_back(ering(e));
+    std::sort(ring_seen.begin(), ring_seen.end());
+    ring_seen.erase(std::unique(ring_seen.begin(), ring_seen.end()), ring_seen.end());
+    // a cycle in the graph of rings and their touching points splits the interior
+    const i64 r0 = find(ring_seen[0]);
+    for (std::size_t t = 1; t < ring_seen.size(); ++t) {
+      i64 rt = find(ring_seen[t]);
+      if (rt == r0) {
+        disconnected = true;
+      } else {
+        uf[rt] = r0;
+      }
+    }
+    return Problem();
+  }
+
+  // sweep() at point v, k edges ending and m leaving, between status edges A and ek:
+  // the diagonals of the monotone partition
+  void partition(i64 v, i64 k, i64 m, i64 A, i64 ek, bool RLin, bool RRin, SweepState& S) {
+    auto &helper = S.helper;
+    auto& is_merge = S.is_merge;
+    if (k == 0) {
+      if (RLin) {  // v splits the region (A, B): connect it below
+        diags.emplace_back(v, helper[A]);
+        helper[A] = v;
+        is_merge[A] = 0;
+      }
+    } else if (m == 0) {
+      if (RLin) {  // the regions left and right of v merge above it
+        if (is_merge[A]) diags.emplace_back(v, helper[A]);
+        if (is_merge[ek]) diags.emplace_back(v, helper[ek]);
+        helper[A] = v;
+        is_merge[A] = 1;
+      }
+    } else {
+      if (RLin) {
+        if (is_merge[A]) diags.emplace_back(v, helper[A]);
+        helper[A] = v;
+        is_merge[A] = 0;
+      }
+      if (RRin && is_merge[ek]) diags.emplace_back(v, helper[ek]);
+    }
+  }
+
   Problem sweep() {
     const i64 np = npoints();
     i64 ne = nedges();
@@ -336,21 +456,19 @@ struct Work {
     }
     using Set = std::set<i64, Cmp>;
     Set status(Cmp{this});
-    std::vector<i64> helper(ne, -1);
-    std::vector<std::uint8_t> is_merge(ne, 0);
-    std::vector<i64> mark(ne, -1);
-    std::vector<i64> lows, upper, ring_seen, uf(nrings());
-    std::iota(uf.begin(), uf.end(), i64(0));
-    auto find = [&](i64 a) {
-      while (uf[a] != a) {
-        uf[a] = uf[uf[a]];
-        a = uf[a];
-      }
-      return a;
-    };
+    SweepState S;
+    S.down = std::move(down);
+    S.helper.assign(ne, -1);
+    S.is_merge.assign(ne, 0);
+    S.mark.assign(ne, -1);
+    S.uf.resize(nrings());
+    std::iota(S.uf.begin(), S.uf.end(), i64(0));
+    auto &helper = S.helper, &mark = S.mark, &lows = S.lows, &upper = S.upper;
+    auto& is_merge = S.is_merge;
+    const auto& dn = S.down;
     diags.clear();
-    auto inside_right = [&](i64 x) { return x >= 0 && down[x]; };
-    auto inside_left = [&](i64 y) { return y >= 0 && !down[y]; };
+    auto inside_right = [&](i64 x) { return x >= 0 && dn[x]; };
+    auto inside_left = [&](i64 y) { return y >= 0 && !dn[y]; };
 
     for (i64 v = 0; v < np; ++v) {
       // two corners of one ring here: the ring touches itself
@@ -382,47 +500,10 @@ struct Work {
       const i64 B = itB == status.end() ? -1 : *itB;
       const i64 k = (i64)lows.size();
       // edges passing through v: same ring -> invalid; another ring -> split at v
-      ring_seen.clear();
-      for (i64 e : lows) {
-        if (mark[e] == v) continue;
-        const i64 r = ering(e);
-        for (i64 q : ring_seen)  // the ring passes through v twice: it crosses itself
-          if (ering(q) == r) return problem(RING_CROSSES, std::max(ecorner[q], ecorner[e]));
-        ring_seen.push_back(e);
-        const i64 c = corner_of_ring(v, r);
-        if (c >= 0) {
-          // the ring runs back over itself (a spike) or touches one of its edges
-          if (cnext(ecorner[e]) == cprev(c)) return problem(RING_SPIKE, cprev(c));
-          if (ecorner[e] == cnext(c)) return problem(RING_SPIKE, cnext(c));
-          return problem(RING_TOUCHES, c);
-        }
-        // e keeps its lower part (it ends at v), a new edge f takes the upper part
-        const i64 f = ne++;
-        const bool dn = down[e];
-        const i64 top = ehi[e];
-        efrom.push_back(dn ? top : v);
-        eto.push_back(dn ? v : top);
-        ecorner.push_back(ecorner[e]);
-        if (dn) {
-          efrom[e] = v;
-        } else {
-          eto[e] = v;
-        }
-        ehi[e] = v;
-        elo.push_back(v);
-        ehi.push_back(top);
-        down.push_back(dn);
-        helper.push_back(-1);
-        is_merge.push_back(0);
-        mark.push_back(-1);
-        mark[e] = v;
-        for (i64 q = ioff[top]; q < ioff[top + 1]; ++q)
-          if (iedge[q] == e) iedge[q] = f;
-        upper.push_back(f);
-      }
+      if (Problem pr = split_through(v, S, ne); !pr.ok()) return pr;
       // regions between edges ending at v close here
       for (i64 t = 0; t + 1 < k; ++t)
-        if (down[lows[t]] && is_merge[lows[t]]) diags.emplace_back(v, helper[lows[t]]);
+        if (dn[lows[t]] && is_merge[lows[t]]) diags.emplace_back(v, helper[lows[t]]);
       const i64 ek = k > 0 ? lows[k - 1] : -1;
       const bool RLin = inside_right(A);
       const bool RRin = k > 0 ? inside_right(ek) : RLin;
@@ -440,32 +521,9 @@ struct Work {
           return between_rings(RINGS_OVERLAP, blame(v, std::vector<i64>{a, b}));
         }
       }
-      // around v: out, in, out, in counter-clockwise (upper edges right to left, then the
-      // edges that ended here left to right); and which rings touch here
-      if (k + m > 2) {
-        std::vector<i64> ccw(upper.rbegin(), upper.rend());
-        ccw.insert(ccw.end(), lows.begin(), lows.end());
-        const i64 d = (i64)ccw.size();
-        for (i64 t = 0; t < d; ++t) {
-          const i64 a = ccw[t], b = ccw[(t + 1) % d];
-          if ((efrom[a] == v) != (efrom[b] == v)) continue;
-          return between_rings(RINGS_CROSS, blame(v, std::vector<i64>{a, b}));
-        }
-        ring_seen.clear();
-        for (i64 e : ccw) ring_seen.push_back(ering(e));
-        std::sort(ring_seen.begin(), ring_seen.end());
-        ring_seen.erase(std::unique(ring_seen.begin(), ring_seen.end()), ring_seen.end());
-        // a cycle in the graph of rings and their touching points splits the interior
-        const i64 r0 = find(ring_seen[0]);
-        for (std::size_t t = 1; t < ring_seen.size(); ++t) {
-          i64 rt = find(ring_seen[t]);
-          if (rt == r0) {
-            disconnected = true;
-          } else {
-            uf[rt] = r0;
-          }
-        }
-      }
+      // around v: out, in, out, in counter-clockwise; and which rings touch here
+      if (k + m > 2)
+        if (Problem pr = around(v, S); !pr.ok()) return pr;
       // edges that become neighbours must not cross (Shamos-Hoey)
       if (m == 0) {
         if (A >= 0 && B >= 0 && cross_properly(A, B)) return crossing(A, B);
@@ -482,30 +540,9 @@ struct Work {
           left = right;
         }
       }
-      // the monotone partition
-      if (k == 0) {
-        if (RLin) {  // v splits the region (A, B): connect it below
-          diags.emplace_back(v, helper[A]);
-          helper[A] = v;
-          is_merge[A] = 0;
-        }
-      } else if (m == 0) {
-        if (RLin) {  // the regions left and right of v merge above it
-          if (is_merge[A]) diags.emplace_back(v, helper[A]);
-          if (is_merge[ek]) diags.emplace_back(v, helper[ek]);
-          helper[A] = v;
-          is_merge[A] = 1;
-        }
-      } else {
-        if (RLin) {
-          if (is_merge[A]) diags.emplace_back(v, helper[A]);
-          helper[A] = v;
-          is_merge[A] = 0;
-        }
-        if (RRin && is_merge[ek]) diags.emplace_back(v, helper[ek]);
-      }
+      partition(v, k, m, A, ek, RLin, RRin, S);  // the monotone partition
       for (i64 f : upper) {
-        if (down[f]) {
+        if (dn[f]) {
           helper[f] = v;
           is_merge[f] = 0;
         }

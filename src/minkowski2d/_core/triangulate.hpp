@@ -101,15 +101,18 @@ void delaunay_flips(const Work<T>& w, std::vector<i64>& t) {
   }
 }
 
-// Triangles of one checked Work (w.run() returned OK), appended to tri (3 input ids each);
-// with delaunay, improved by Lawson's flips (delaunay_flips).
+// The half-edges of a checked Work and the face cycles through them: boundary edge e
+// (from -> to), diagonal d as ne + 2d (u -> v) and ne + 2d + 1 (v -> u); org and dst
+// their ends, nxt[h] the half-edge after h around its face.
 template <class T>
-void triangulate_work(const Work<T>& w, std::vector<i64>& tri, bool delaunay) {
+void face_cycles(const Work<T>& w, std::vector<i64>& org, std::vector<i64>& dst,
+                 std::vector<i64>& nxt) {
   const i64 np = w.npoints(), ne = w.nedges(), nd = (i64)w.diags.size();
   const i64 H = ne + 2 * nd;
   // half-edges: boundary edge e (from -> to), diagonal d as ne + 2d (u -> v) and
   // ne + 2d + 1 (v -> u)
-  std::vector<i64> org(H), dst(H);
+  org.assign(H, 0);
+  dst.assign(H, 0);
   for (i64 e = 0; e < ne; ++e) {
     org[e] = w.efrom[e];
     dst[e] = w.eto[e];
@@ -148,7 +151,7 @@ void triangulate_work(const Work<T>& w, std::vector<i64>& tri, bool delaunay) {
       rays[fill[org[b]]++] = Ray{dst[b], b, a};
     }
   }
-  std::vector<i64> nxt(H, -1);
+  nxt.assign(H, -1);
   for (i64 p = 0; p < np; ++p) {
     Ray* r = rays.data() + off[p];
     const i64 deg = off[p + 1] - off[p];
@@ -165,6 +168,106 @@ void triangulate_work(const Work<T>& w, std::vector<i64>& tri, bool delaunay) {
       nxt[r[k].in] = o;
     }
   }
+}
+
+// The triangles of one monotone face (its k >= 3 point ids in cycle order), by the
+// stack algorithm over its two chains merged in point order; emit(a, b, c) for each.
+// merged, mside, stack and side are scratch.
+template <class T, class Emit>
+void triangulate_face(const Work<T>& w, const std::vector<i64>& face, std::vector<i64>& merged,
+                      std::vector<std::uint8_t>& mside, std::vector<i64>& stack,
+                      std::vector<std::uint8_t>& side, Emit&& emit) {
+  const i64 k = (i64)face.size();
+  // the face is monotone in point order: lowest and highest, two chains between
+  i64 lo = 0, hi = 0;
+  for (i64 i = 1; i < k; ++i) {
+    if (face[i] < face[lo]) lo = i;
+    if (face[i] > face[hi]) hi = i;
+  }
+  // right chain: counter-clockwise from lo to hi (ascending); left chain: clockwise
+  // from lo to hi (ascending as well)
+  merged.clear();
+  mside.clear();
+  merged.push_back(face[lo]);
+  mside.push_back(2);
+  i64 i = (lo + 1) % k, j = (lo + k - 1) % k;
+  while (i != hi || j != hi) {
+    bool take_right;
+    if (i == hi) {
+      take_right = false;
+    } else if (j == hi) {
+      take_right = true;
+    } else {
+      take_right = face[i] < face[j];
+    }
+    i64 pnt = take_right ? face[i] : face[j];
+    if (pnt <= merged.back()) throw std::logic_error("triangulate: face is not monotone");
+    merged.push_back(pnt);
+    mside.push_back(take_right ? 1 : 0);
+    if (take_right) {
+      i = (i + 1) % k;
+    } else {
+      j = (j + k - 1) % k;
+    }
+  }
+  if (face[hi] <= merged.back()) throw std::logic_error("triangulate: face is not monotone");
+  merged.push_back(face[hi]);
+  mside.push_back(2);
+  // the stack algorithm
+  stack.clear();
+  side.clear();
+  stack.push_back(merged[0]);
+  side.push_back(mside[0]);
+  stack.push_back(merged[1]);
+  side.push_back(mside[1]);
+  for (i64 t = 2; t + 1 < k; ++t) {
+    const i64 u = merged[t];
+    const std::uint8_t su = mside[t];
+    if (su != side.back()) {
+      // opposite chains: u sees every vertex on the stack
+      for (std::size_t q = stack.size() - 1; q > 0; --q) emit(u, stack[q], stack[q - 1]);
+      i64 last = stack.back();
+      std::uint8_t lside = side.back();
+      stack.clear();
+      side.clear();
+      stack.push_back(last);
+      side.push_back(lside);
+      stack.push_back(u);
+      side.push_back(su);
+    } else {
+      i64 last = stack.back();
+      std::uint8_t lside = side.back();
+      stack.pop_back();
+      side.pop_back();
+      while (!stack.empty()) {
+        const i64 top = stack.back();
+        // convex at `last` (strictly), seen along the chain's counter-clockwise order
+        int s = su == 1 ? w.orient(w.prep[top], w.prep[last], w.prep[u])
+                        : w.orient(w.prep[u], w.prep[last], w.prep[top]);
+        if (s <= 0) break;
+        emit(u, last, top);
+        last = top;
+        lside = side.back();
+        stack.pop_back();
+        side.pop_back();
+      }
+      stack.push_back(last);
+      side.push_back(lside);
+      stack.push_back(u);
+      side.push_back(su);
+    }
+  }
+  const i64 u = merged[k - 1];
+  for (std::size_t q = stack.size() - 1; q > 0; --q) emit(u, stack[q], stack[q - 1]);
+}
+
+// Triangles of one checked Work (w.run() returned OK), appended to tri (3 input ids each);
+// with delaunay, improved by Lawson's flips (delaunay_flips).
+template <class T>
+void triangulate_work(const Work<T>& w, std::vector<i64>& tri, bool delaunay) {
+  const i64 H = w.nedges() + 2 * (i64)w.diags.size();
+  std::vector<i64> org, dst, nxt;
+  face_cycles(w, org, dst, nxt);
   // faces
   std::vector<std::uint8_t> seen(H, 0);
   std::vector<i64> face, merged, stack;
@@ -190,87 +293,7 @@ void triangulate_work(const Work<T>& w, std::vector<i64>& tri, bool delaunay) {
     } while (h != h0);
     const i64 k = (i64)face.size();
     if (k < 3) throw std::logic_error("triangulate: face with fewer than 3 vertices");
-    // the face is monotone in point order: lowest and highest, two chains between
-    i64 lo = 0, hi = 0;
-    for (i64 i = 1; i < k; ++i) {
-      if (face[i] < face[lo]) lo = i;
-      if (face[i] > face[hi]) hi = i;
-    }
-    // right chain: counter-clockwise from lo to hi (ascending); left chain: clockwise
-    // from lo to hi (ascending as well)
-    merged.clear();
-    mside.clear();
-    merged.push_back(face[lo]);
-    mside.push_back(2);
-    i64 i = (lo + 1) % k, j = (lo + k - 1) % k;
-    while (i != hi || j != hi) {
-      bool take_right;
-      if (i == hi) {
-        take_right = false;
-      } else if (j == hi) {
-        take_right = true;
-      } else {
-        take_right = face[i] < face[j];
-      }
-      i64 pnt = take_right ? face[i] : face[j];
-      if (pnt <= merged.back()) throw std::logic_error("triangulate: face is not monotone");
-      merged.push_back(pnt);
-      mside.push_back(take_right ? 1 : 0);
-      if (take_right) {
-        i = (i + 1) % k;
-      } else {
-        j = (j + k - 1) % k;
-      }
-    }
-    if (face[hi] <= merged.back()) throw std::logic_error("triangulate: face is not monotone");
-    merged.push_back(face[hi]);
-    mside.push_back(2);
-    // the stack algorithm
-    stack.clear();
-    side.clear();
-    stack.push_back(merged[0]);
-    side.push_back(mside[0]);
-    stack.push_back(merged[1]);
-    side.push_back(mside[1]);
-    for (i64 t = 2; t + 1 < k; ++t) {
-      const i64 u = merged[t];
-      const std::uint8_t su = mside[t];
-      if (su != side.back()) {
-        // opposite chains: u sees every vertex on the stack
-        for (std::size_t q = stack.size() - 1; q > 0; --q) emit(u, stack[q], stack[q - 1]);
-        i64 last = stack.back();
-        std::uint8_t lside = side.back();
-        stack.clear();
-        side.clear();
-        stack.push_back(last);
-        side.push_back(lside);
-        stack.push_back(u);
-        side.push_back(su);
-      } else {
-        i64 last = stack.back();
-        std::uint8_t lside = side.back();
-        stack.pop_back();
-        side.pop_back();
-        while (!stack.empty()) {
-          const i64 top = stack.back();
-          // convex at `last` (strictly), seen along the chain's counter-clockwise order
-          int s = su == 1 ? w.orient(w.prep[top], w.prep[last], w.prep[u])
-                          : w.orient(w.prep[u], w.prep[last], w.prep[top]);
-          if (s <= 0) break;
-          emit(u, last, top);
-          last = top;
-          lside = side.back();
-          stack.pop_back();
-          side.pop_back();
-        }
-        stack.push_back(last);
-        side.push_back(lside);
-        stack.push_back(u);
-        side.push_back(su);
-      }
-    }
-    const i64 u = merged[k - 1];
-    for (std::size_t q = stack.size() - 1; q > 0; --q) emit(u, stack[q], stack[q - 1]);
+    triangulate_face(w, face, merged, mside, stack, side, emit);
   }
   if (delaunay) delaunay_flips(w, pts);
   for (i64 p : pts) tri.push_back(w.prep[p]);

@@ -1,0 +1,339 @@
+// overlay_trace.hpp -- steps 5 and 6 of an overlay run (overlay.hpp): the plane sweep
+// over the pieces (winding numbers), the boundary, the rings traced along it, each
+// hole's exterior, and the assembled polygons. Part of overlay.hpp (include that).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "overlay_run.hpp"
+
+namespace mk {
+namespace ov {
+
+template <class F>
+inline void Overlay::sweep(const std::vector<Piece>& ps, F&& at_vertex) {
+  const i64 nv = (i64)av_.size(), np = (i64)ps.size();
+  std::vector<i64>&by_rank = sw_by_rank_, &lo_l = sw_lo_l_, &lo_r = sw_lo_r_,
+  &at_l = sw_at_l_, &at_r = sw_at_r_, &fresh = sw_fresh_;
+  by_rank.resize(nv);
+  for (i64 v = 0; v < nv; ++v) by_rank[rank_[v]] = v;
+  lo_l.assign(nv + 1, 0);
+  lo_r.assign(nv + 1, 0);
+  for (const Piece& e : ps) {
+    ++lo_l[e.l + 1];
+    ++lo_r[e.r + 1];
+  }
+  for (i64 v = 0; v < nv; ++v) {
+    lo_l[v + 1] += lo_l[v];
+    lo_r[v + 1] += lo_r[v];
+  }
+  at_l.resize(np);
+  at_r.resize(np);
+  sw_fill_.assign(lo_l.begin(), lo_l.end() - 1);
+  for (i64 e = 0; e < np; ++e) at_l[sw_fill_[ps[e].l]++] = e;
+  sw_fill_.assign(lo_r.begin(), lo_r.end() - 1);
+  for (i64 e = 0; e < np; ++e) at_r[sw_fill_[ps[e].r]++] = e;
+  SweepStatus& st = sw_st_;
+  st.clear();
+  auto& ch = st.ch;
+  for (i64 t = 0; t < nv; ++t) {
+    i64 v = by_rank[t];
+    const i64 nend = lo_r[v + 1] - lo_r[v], nstart = lo_l[v + 1] - lo_l[v];
+    if (nend == 0 && nstart == 0) continue;
+    auto below = [&](i64 id) {
+      const Piece& e = ps[id];
+      return e.r != v && side(e, v) > 0;  // v is on the pieces that end at v
+    };
+    // the first piece not below v: its chunk c, then its place o in it
+    const std::size_t nc = st.size();
+    std::size_t c = 0, o = 0;
+    {
+      std::size_t lo = 0, hi = nc;
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        if (below(ch[mid].back())) lo = mid + 1;
+        else hi = mid;
+      }
+      c = lo;
+      if (c < nc) {
+        std::size_t a = 0, b = ch[c].size();
+        while (a < b) {
+          std::size_t mid = (a + b) / 2;
+          if (below(ch[c][mid])) a = mid + 1;
+          else b = mid;
+        }
+        o = a;
+      }
+    }
+    // the nend pieces from there end at v: removed (they may span chunks)
+    for (i64 k = nend; k > 0;) {
+#ifdef MK_OVERLAY_CHECK
+      if (c >= st.size() || ps[ch[c][o]].r != v) std::abort();
+#endif
+      std::vector<i64>& cur = ch[c];
+      const std::size_t take = std::min<std::size_t>((std::size_t)k, cur.size() - o);
+      cur.erase(cur.begin() + (std::ptrdiff_t)o, cur.begin() + (std::ptrdiff_t)(o + take));
+      k -= (i64)take;
+      if (cur.empty()) {
+        st.close(c);  // the next chunk is now chunk c, from its start
+        o = 0;
+      } else if (o == cur.size() && k > 0) {
+        ++c;
+        o = 0;
+      }
+    }
+    if (nstart == 0) continue;
+    // the predecessor of the place, then the fresh pieces inserted there
+    i64 pred = -1;
+    if (o > 0) pred = ch[c][o - 1];
+    else if (c > 0) pred = ch[c - 1].back();
+    fresh.assign(at_l.begin() + lo_l[v], at_l.begin() + lo_l[v + 1]);
+    if (fresh.size() > 1)
+      std::sort(fresh.begin(), fresh.end(),
+                [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
+    if (c == st.size()) {  // at the top: the last chunk's end, or a new chunk
+      if (c > 0 && ch[c - 1].size() < 2 * SweepStatus::kChunk) {
+        --c;
+        o = ch[c].size();
+      } else {
+        st.open(c);
+        o = 0;
+      }
+    }
+    std::vector<i64>& cur = ch[c];
+    cur.insert(cur.begin() + (std::ptrdiff_t)o, fresh.begin(), fresh.end());
+    if (cur.size() > 2 * SweepStatus::kChunk) {  // split in halves
+      const std::size_t half = cur.size() / 2;
+      st.open(c + 1);
+      std::vector<i64>& a = ch[c];
+      ch[c + 1].assign(a.begin() + (std::ptrdiff_t)half, a.end());
+      a.resize(half);
+    }
+    at_vertex(fresh, pred);
+  }
+}
+
+inline void Overlay::windings() {
+  sweep(pcs_, [&](const std::vector<i64>& fresh, i64 pred) {
+    int w0 = pred < 0 ? 0 : pcs_[pred].b0 + pcs_[pred].c0;
+    int w1 = pred < 0 ? 0 : pcs_[pred].b1 + pcs_[pred].c1;
+    for (i64 e : fresh) {
+      pcs_[e].b0 = w0;
+      pcs_[e].b1 = w1;
+      w0 += pcs_[e].c0;
+      w1 += pcs_[e].c1;
+    }
+  });
+}
+
+inline void Overlay::boundary() {
+  bnd_.clear();
+  for (const Piece& e : pcs_) {
+    bool ib = rule_inside(rule_, e.b0, e.b1);
+    bool ia = rule_inside(rule_, e.b0 + e.c0, e.b1 + e.c1);
+    if (ib == ia) continue;
+    Piece b = e;
+    b.from = ia ? e.l : e.r;
+    b.to = ia ? e.r : e.l;
+    bnd_.push_back(b);
+  }
+  // boundary pieces reference arrangement vertices: map to global ids for run(out)
+  vg_.assign(av_.begin(), av_.end());
+}
+
+inline void Overlay::trace(Rings& out) {
+  out.clear();
+  rings_.clear();
+  ring_edges_.clear();
+  ring_lines_.clear();
+  ring_ccw_.clear();
+  const i64 nv = (i64)av_.size(), nb = (i64)bnd_.size();
+  std::vector<i64> lo(nv + 1, 0);
+  for (const Piece& b : bnd_) ++lo[b.from + 1];
+  for (i64 v = 0; v < nv; ++v) lo[v + 1] += lo[v];
+  std::vector<i64> outs(nb);
+  {
+    std::vector<i64> f(lo.begin(), lo.end() - 1);
+    for (i64 b = 0; b < nb; ++b) outs[f[bnd_[b].from]++] = b;
+  }
+  for (i64 v = 0; v < nv; ++v) {
+    if (lo[v + 1] - lo[v] > 1)
+      std::sort(outs.begin() + lo[v], outs.begin() + lo[v + 1], [&](i64 a, i64 b) {
+        const P *p1, *q1, *p2, *q2;
+        bdir(bnd_[a], p1, q1);
+        bdir(bnd_[b], p2, q2);
+        return angle_less(*p1, *q1, *p2, *q2);
+      });
+  }
+  // the next boundary piece after b: the first outgoing one clockwise from the way back
+  auto next_of = [&](i64 b) -> i64 {
+    i64 v = bnd_[b].to;
+    i64 k0 = lo[v], k1 = lo[v + 1];
+    if (k1 - k0 == 1) return outs[k0];
+    const P *p, *q;
+    bdir(bnd_[b], p, q);  // the way back is q -> p
+    i64 best = -1;
+    for (i64 k = k0; k < k1; ++k) {
+      const P *p2, *q2;
+      bdir(bnd_[outs[k]], p2, q2);
+      if (angle_less(*p2, *q2, *q, *p)) best = k;
+    }
+    return best >= 0 ? outs[best] : outs[k1 - 1];
+  };
+  junction_.assign(nv, 0);
+  for (i64 v = 0; v < nv; ++v) junction_[v] = lo[v + 1] - lo[v] > 1;
+  std::vector<char> used(nb, 0);
+  std::vector<i64> walk_v, walk_e, pos(nv, -1);
+  for (i64 b0 = 0; b0 < nb; ++b0) {
+    if (used[b0]) continue;
+    // one closed walk, split at repeated vertices into simple loops
+    walk_v.clear();
+    walk_e.clear();
+    i64 b = b0;
+    while (!used[b]) {
+      used[b] = 1;
+      i64 v = bnd_[b].from;
+      if (pos[v] >= 0) {
+        i64 p0 = pos[v];
+        std::vector<i64> rv(walk_v.begin() + p0, walk_v.end());
+        std::vector<i64> re(walk_e.begin() + p0, walk_e.end());
+        for (i64 k = p0; k < (i64)walk_v.size(); ++k) pos[walk_v[k]] = -1;
+        walk_v.resize(p0);
+        walk_e.resize(p0);
+        add_ring(rv, re);
+      }
+      pos[v] = (i64)walk_v.size();
+      walk_v.push_back(v);
+      walk_e.push_back(b);
+      b = next_of(b);
+    }
+    for (i64 v : walk_v) pos[v] = -1;
+    if (!walk_v.empty()) add_ring(walk_v, walk_e);
+  }
+  assemble(out);
+}
+
+inline void Overlay::add_ring(const std::vector<i64>& rv, const std::vector<i64>& re) {
+  const i64 n = (i64)rv.size();
+  std::vector<i64> kv, kl;
+  kv.reserve(n);
+  i64 lowest = -1, lowest_i = 0;
+  for (i64 i = 0; i < n; ++i) {
+    // rv[i] sits between re[i - 1] (in) and re[i] (out)
+    // straight on: dropped, unless other boundary edges meet there (a ring touching
+    // this one at a point of its edge): the vertex stays in both, so rounding cannot
+    // move the edge off the touching vertex
+    if (!junction_[rv[i]] && bturn(bnd_[re[(i + n - 1) % n]], bnd_[re[i]]) == 0) continue;
+    if (lowest < 0 || rank_[rv[i]] < rank_[lowest]) {
+      lowest = rv[i];
+      lowest_i = i;
+    }
+    kv.push_back(rv[i]);
+    kl.push_back(bnd_[re[i]].line);
+  }
+  if (kv.size() < 3) return;  // cannot happen for a boundary with area
+  // the turn at the lowest vertex is strict and its sign is the orientation
+  int t = bturn(bnd_[re[(lowest_i + n - 1) % n]], bnd_[re[lowest_i]]);
+  rings_.push_back(std::move(kv));
+  ring_lines_.push_back(std::move(kl));
+  ring_edges_.push_back(re);
+  ring_ccw_.push_back(t > 0);
+}
+
+inline void Overlay::holes() {
+  const i64 nr = (i64)rings_.size();
+  owner_.assign(nr, -1);
+  bool any = false;
+  for (i64 k = 0; k < nr; ++k) any |= !ring_ccw_[k];
+  if (!any) return;
+  std::vector<Piece> ps;
+  std::vector<i64> ring_of;
+  for (i64 k = 0; k < nr; ++k)
+    for (i64 b : ring_edges_[k]) {
+      ps.push_back(bnd_[b]);
+      ring_of.push_back(k);
+    }
+  std::vector<char> done(nr, 0);
+  sweep(ps, [&](const std::vector<i64>& fresh, i64 pred) {
+    i64 below = pred;
+    for (i64 e : fresh) {
+      i64 k = ring_of[e];
+      if (!done[k]) {
+        done[k] = 1;
+        if (!ring_ccw_[k] && below >= 0) {
+          i64 rk = ring_of[below];
+          owner_[k] = ring_ccw_[rk] ? rk : owner_[rk];
+        }
+      }
+      below = e;
+    }
+  });
+}
+
+inline void Overlay::assemble(Rings& out) {
+  holes();
+  const i64 nr = (i64)rings_.size(), nv = (i64)av_.size();
+  std::vector<double> vx(nv), vy(nv);
+  std::vector<char> have(nv, 0);
+  out.exact_vertices = true;
+  auto xy = [&](i64 v, double& x, double& y) {
+    if (!have[v]) {
+      g_.rounded(av_[v], vx[v], vy[v]);
+      if (!(vx[v] - vx[v] == 0 && vy[v] - vy[v] == 0)) out.status = OVERFLOW;
+      if (out.exact_vertices && !g_.rounds_exactly(av_[v], vx[v], vy[v]))
+        out.exact_vertices = false;
+      have[v] = 1;
+    }
+    x = vx[v];
+    y = vy[v];
+  };
+  // a ring's smallest rounded vertex (x, then y): where it starts, and the sort key
+  std::vector<std::pair<std::pair<double, double>, i64>> key(nr);
+  std::vector<i64> start(nr);
+  for (i64 k = 0; k < nr; ++k) {
+    std::pair<double, double> best{INFINITY, INFINITY};
+    for (std::size_t i = 0; i < rings_[k].size(); ++i) {
+      double x, y;
+      xy(rings_[k][i], x, y);
+      if (std::make_pair(x, y) < best) {
+        best = {x, y};
+        start[k] = (i64)i;
+      }
+    }
+    key[k] = {best, k};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<std::vector<i64>> kids(nr);
+  for (auto& kk : key) {
+    i64 k = kk.second;
+    if (ring_ccw_[k]) continue;
+    if (owner_[k] >= 0)
+      kids[owner_[k]].push_back(k);
+    else
+      out.status = INTERNAL;  // a hole without an exterior: never expected
+  }
+  auto emit = [&](i64 k) {
+    const std::vector<i64>& r = rings_[k];
+    const std::size_t m = r.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      double x, y;
+      xy(r[(start[k] + i) % m], x, y);
+      out.xy.push_back(x);
+      out.xy.push_back(y);
+      if (out.want_lines) out.line.push_back(ring_lines_[k][(start[k] + i) % m]);
+    }
+    out.ring_off.push_back((i64)out.xy.size() / 2);
+  };
+  for (auto& kk : key) {
+    i64 k = kk.second;
+    if (!ring_ccw_[k]) continue;
+    emit(k);
+    for (i64 h : kids[k]) emit(h);
+    out.poly_off.push_back((i64)out.ring_off.size() - 1);
+  }
+}
+
+}  // namespace ov
+}  // namespace mk
