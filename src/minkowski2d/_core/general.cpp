@@ -190,6 +190,17 @@ void bind_general(nb::module_& m) {
   m.attr("METHOD_AUTO") = (int)mk::ms::AUTO;
   m.attr("METHOD_PIECES") = (int)mk::ms::PIECES;
   m.attr("METHOD_CONVOLUTION") = (int)mk::ms::CONVOLUTION;
+  nb::dict methods;  // the public names of the methods
+  methods["auto"] = (int)mk::ms::AUTO;
+  methods["decomposition"] = (int)mk::ms::PIECES;
+  methods["convolution"] = (int)mk::ms::CONVOLUTION;
+  m.attr("METHODS") = methods;
+  const mk::ms::Limits L;
+  nb::dict limits;  // the default work limits (minkowski.hpp Limits)
+  limits["MAX_CONVOLUTION_SEGMENTS"] = (long long)L.conv_segments;
+  limits["MAX_PIECE_PAIRS"] = (long long)L.piece_pairs;
+  limits["MAX_CROSSINGS"] = (long long)L.crossings;
+  m.attr("GENERAL_LIMITS") = limits;
 }
 
 }  // namespace mk_bind

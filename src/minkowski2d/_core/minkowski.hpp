@@ -336,10 +336,15 @@ struct Table {
 
 enum Method : int { AUTO = 0, PIECES = 1, CONVOLUTION = 2 };
 
+// The work limits of one pair, and their defaults: the one home of these numbers
+// (exported as GENERAL_LIMITS; minkowski2d.general.limits starts from them, and a
+// ResourceLimitError names them). About 800 bytes per convolution segment with its
+// crossings, 150 per crossing: two 2048-vertex stars have over 2 M convolution
+// segments and would need gigabytes, so they take the pieces.
 struct Limits {
-  i64 conv_segments = (i64)1 << 24;  // convolution segments of one pair
+  i64 conv_segments = (i64)1 << 21;  // convolution segments of one pair
   i64 piece_pairs = (i64)1 << 21;    // piece sums of one pair
-  i64 crossings = (i64)1 << 22;      // crossings noded for one pair (all runs)
+  i64 crossings = (i64)1 << 21;      // crossings noded for one pair (all runs)
 };
 
 inline std::vector<Polygon> operand(const Table& T, i64 op) {

@@ -131,6 +131,11 @@ void bind_offset(nb::module_& m) {
   m.attr("OFFSET_ROUND") = (int)mk::off::ROUND;
   m.attr("OFFSET_MITER") = (int)mk::off::MITER;
   m.attr("OFFSET_SQUARE") = (int)mk::off::SQUARE;
+  nb::dict joins;  // the public names of the joins
+  joins["round"] = (int)mk::off::ROUND;
+  joins["miter"] = (int)mk::off::MITER;
+  joins["square"] = (int)mk::off::SQUARE;
+  m.attr("OFFSET_JOINS") = joins;
   m.attr("OFFSET_FINE") = (int)mk::off::FINE;
   m.attr("OFFSET_TOLERANCE") = (int)mk::off::TOLERANCE;
   m.attr("OFFSET_DISTANCE") = (int)mk::off::DISTANCE;

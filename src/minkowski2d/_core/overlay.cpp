@@ -128,6 +128,12 @@ void bind_overlay(nb::module_& m) {
   m.attr("OVERLAY_UNION") = (int)mk::ov::UNION;
   m.attr("OVERLAY_DIFFERENCE") = (int)mk::ov::DIFFERENCE;
   m.attr("OVERLAY_INTERSECTION") = (int)mk::ov::INTERSECTION;
+  nb::dict ops;  // the public names of the operations
+  ops["union"] = (int)mk::ov::UNION;
+  ops["difference"] = (int)mk::ov::DIFFERENCE;
+  ops["intersection"] = (int)mk::ov::INTERSECTION;
+  ops["xor"] = (int)mk::ov::XOR;
+  m.attr("OVERLAY_OPS") = ops;
 }
 
 }  // namespace mk_bind

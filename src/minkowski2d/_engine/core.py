@@ -163,13 +163,8 @@ OVERLAY_UNION: int = _ext.OVERLAY_UNION
 OVERLAY_DIFFERENCE: int = _ext.OVERLAY_DIFFERENCE
 OVERLAY_INTERSECTION: int = _ext.OVERLAY_INTERSECTION
 OVERLAY_XOR: int = _ext.OVERLAY_XOR
-#: operation name -> the core's code (the overlay's and the booleans' one table)
-OVERLAY_OPS: dict[str, int] = {
-    "union": OVERLAY_UNION,
-    "difference": OVERLAY_DIFFERENCE,
-    "intersection": OVERLAY_INTERSECTION,
-    "xor": OVERLAY_XOR,
-}
+#: operation name -> the core's code (overlay.cpp; the overlay's and the booleans')
+OVERLAY_OPS: dict[str, int] = dict(_ext.OVERLAY_OPS)
 #: fill rule name -> the core's code (overlay.hpp FillRule)
 FILL_RULES: dict[str, int] = dict(_ext.FILL_RULES)
 #: the value of a work limit that never stops a run (boolean.hpp Limits)
@@ -179,10 +174,15 @@ METHOD_ERODE: int = _ext.METHOD_ERODE
 METHOD_AUTO: int = _ext.METHOD_AUTO
 METHOD_PIECES: int = _ext.METHOD_PIECES
 METHOD_CONVOLUTION: int = _ext.METHOD_CONVOLUTION
+#: method name -> code, and the default work limits (minkowski.hpp Limits)
+METHODS: dict[str, int] = dict(_ext.METHODS)
+GENERAL_LIMITS: dict[str, int] = dict(_ext.GENERAL_LIMITS)
 #: The offset's joins and codes (offset.hpp).
 OFFSET_ROUND: int = _ext.OFFSET_ROUND
 OFFSET_MITER: int = _ext.OFFSET_MITER
 OFFSET_SQUARE: int = _ext.OFFSET_SQUARE
+#: join name -> code (offset.hpp Join)
+OFFSET_JOINS: dict[str, int] = dict(_ext.OFFSET_JOINS)
 OFFSET_FINE: int = _ext.OFFSET_FINE
 OFFSET_TOLERANCE: int = _ext.OFFSET_TOLERANCE
 OFFSET_DISTANCE: int = _ext.OFFSET_DISTANCE

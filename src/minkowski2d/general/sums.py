@@ -65,17 +65,9 @@ class _Prepared:
 
 #: the public method names -> the core's codes (minkowski.hpp Method), and back for
 #: ``method_used`` (the core reports AUTO for a sum it did not need to decompose: "flat")
-_METHOD_CODE = {
-    "auto": core.METHOD_AUTO,
-    None: core.METHOD_AUTO,
-    "decomposition": core.METHOD_PIECES,
-    "convolution": core.METHOD_CONVOLUTION,
-}
-_USED = {
-    core.METHOD_AUTO: "flat",
-    core.METHOD_PIECES: "decomposition",
-    core.METHOD_CONVOLUTION: "convolution",
-}
+_METHOD_CODE = {**core.METHODS, None: core.METHODS["auto"]}
+#: the code of the method a sum used -> its name (AUTO: the sum needed no method, "flat")
+_USED = {**{code: name for name, code in core.METHODS.items()}, core.METHODS["auto"]: "flat"}
 
 
 _NO_PIECES = (np.empty((0, 2)), np.zeros(1, np.int64))

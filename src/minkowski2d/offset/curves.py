@@ -30,7 +30,7 @@ APPROX = ("outer", "inner")
 JOINS = ("round", "miter", "square")
 #: The default ``miter_limit`` of :func:`offset` (a multiple of ``|r|``).
 MITER_LIMIT = 2.0
-_JOIN_CODE = {"round": core.OFFSET_ROUND, "miter": core.OFFSET_MITER, "square": core.OFFSET_SQUARE}
+_JOIN_CODE = core.OFFSET_JOINS
 
 
 # --------------------------------------------------------------------------------------
