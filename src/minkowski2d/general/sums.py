@@ -65,7 +65,7 @@ class _Prepared:
 
 #: the public method names -> the core's codes (minkowski.hpp Method), and back for
 #: ``method_used`` (the core reports AUTO for a sum it did not need to decompose: "flat")
-_METHOD_CODE = {**core.METHODS, None: core.METHODS["auto"]}
+_METHOD_CODE = core.METHODS | {None: core.METHODS["auto"]}
 #: the code of the method a sum used -> its name (AUTO: the sum needed no method, "flat")
 _USED = {**{code: name for name, code in core.METHODS.items()}, core.METHODS["auto"]: "flat"}
 
