@@ -31,11 +31,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <thread>
 #include <vector>
 
 #include "convex.hpp"
 #include "exact.hpp"
+#include "parallel.hpp"
 
 namespace mk {
 namespace coll {
@@ -212,16 +212,12 @@ inline PrepResult prep(const double* p, i64 np_, const i64* off, i64 P, bool is_
       if (r >= 0) return {RANGE, q, r};
     }
   }
-  int nt = (int)std::max<i64>(1, std::min<i64>(threads, P / 64));
+  const int nt = thread_count(threads, P / 64);
   if (nt <= 1) return prep_range(p, off, 0, P, mode, idx, kk, ss, inv);
   std::vector<PrepResult> res(nt, PrepResult{OK, 0, 0});
-  std::vector<std::thread> pool;
-  auto work = [&](int t) {
+  parallel_threads(nt, [&](int t) {
     res[t] = prep_range(p, off, P * t / nt, P * (t + 1) / nt, mode, idx, kk, ss, inv);
-  };
-  for (int t = 1; t < nt; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (auto& th : pool) th.join();
+  });
   for (auto& r : res)
     if (r.code != OK) return r;
   return {OK, 0, 0};
@@ -1025,17 +1021,13 @@ inline i64 pairs(const Side& SA, const Side& SB, const i64* qa, const i64* qb, i
                  std::int8_t* hit, double* res, int threads) {
   i64 big = 2;
   for (i64 q = 0; q < P; ++q) big = std::max(big, SA.kk[qa[q]] + SB.kk[qb[q]]);
-  int nt = (int)std::max<i64>(1, std::min<i64>(threads, P / 64));
+  const int nt = thread_count(threads, P / 64);
   if (nt <= 1) return pairs_range(SA, SB, qa, qb, mode, hit, res, 0, P, big);
   std::vector<i64> fail(nt, -1);
-  std::vector<std::thread> pool;
-  auto work = [&](int t) {
+  parallel_threads(nt, [&](int t) {
     i64 q0 = P * t / nt, q1 = P * (t + 1) / nt;
     fail[t] = pairs_range(SA, SB, qa, qb, mode, hit, res, q0, q1, big);
-  };
-  for (int t = 1; t < nt; ++t) pool.emplace_back(work, t);
-  work(0);
-  for (auto& th : pool) th.join();
+  });
   for (i64 f : fail)
     if (f >= 0) return f;
   return -1;

@@ -15,12 +15,12 @@
 
 #include <sys/mman.h>
 #include <cstring>
-#include <thread>
 #include <vector>
 
 #include "bind.hpp"
 #include "convex.hpp"
 #include "exact.hpp"
+#include "parallel.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -193,7 +193,7 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
   i64 pair = 0, vertex = 0, total = 0;
   {
     nb::gil_scoped_release nogil;
-    int nt = std::max(1, std::min<int>(threads, (int)std::max<i64>(1, P / 64)));
+    const int nt = mk::thread_count(threads, P / 64);
     struct Chunk {
       i64 q0 = 0, q1 = 0;
       T* buf = nullptr;
@@ -239,17 +239,7 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
       }
       c.used = o;
     };
-    auto parallel = [&](auto&& fn) {
-      if (nt == 1) {
-        fn(0);
-        return;
-      }
-      std::vector<std::thread> pool;
-      for (int t = 1; t < nt; ++t) pool.emplace_back(fn, t);
-      fn(0);
-      for (auto& th : pool) th.join();
-    };
-    parallel(run);
+    mk::parallel_threads(nt, run);
     for (auto& c : ch)
       if (c.fail >= 0) {
         code = c.code, pair = c.fail, which = c.which, vertex = c.vertex;
@@ -266,7 +256,7 @@ nb::tuple sum_batch(In2<T> A, In1<i64> a_lo, In1<i64> a_hi, In2<T> B, In1<i64> b
         ch[0].buf = nullptr;
       } else {
         coords = alloc<T>(2 * (std::size_t)total);
-        parallel([&](int t) {
+        mk::parallel_threads(nt, [&](int t) {
           Chunk& c = ch[t];
           if (c.used) std::memcpy(coords + 2 * off[c.q0], c.buf, sizeof(T) * 2 * c.used);
           std::free(c.buf);

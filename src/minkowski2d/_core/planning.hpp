@@ -27,12 +27,12 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "convex.hpp"
 #include "exact.hpp"
+#include "parallel.hpp"
 
 namespace mk {
 
@@ -667,20 +667,17 @@ struct Planner {
     const i64 N = ncand();
     build_filter();
     std::vector<std::pair<int, int>> edges;
-    const int nt = std::max(1, std::min<int>(threads, (int)(N / 256) + 1));
+    const int nt = thread_count(threads, N / 256 + 1);
     if (nt == 1) {
       pairs_of(0, 1, S, edges);
     } else {
       std::vector<std::vector<std::pair<int, int>>> part(nt);
-      std::vector<std::thread> pool;
-      for (int t = 1; t < nt; ++t)
-        pool.emplace_back([&, t]() {
-          PlanScratch St;
-          St.init((std::size_t)items());
-          pairs_of(t, nt, St, part[t]);
-        });
-      pairs_of(0, nt, S, part[0]);
-      for (auto& th : pool) th.join();
+      parallel_threads(nt, [&](int t) {
+        if (t == 0) return pairs_of(0, nt, S, part[0]);
+        PlanScratch St;
+        St.init((std::size_t)items());
+        pairs_of(t, nt, St, part[t]);
+      });
       for (auto& p : part) edges.insert(edges.end(), p.begin(), p.end());
     }
     aoff.assign(N + 1, 0);
