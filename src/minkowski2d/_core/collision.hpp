@@ -35,6 +35,7 @@
 
 #include "convex.hpp"
 #include "exact.hpp"
+#include "filter.hpp"
 #include "parallel.hpp"
 
 namespace mk {
@@ -46,9 +47,20 @@ constexpr i64 AUTO_SUM_MAX = 64;  // vertex total up to which the walk beats GJK
 constexpr int NCOL = 7;           // result row: value, normal (2), point_a (2), point_b (2)
 
 constexpr double I_LIM = (double)FLOAT_EXACT_INT;  // ints convert to double exactly
-constexpr double REL = 0x1p-45;  // relative accuracy demanded of a float cross product
+// Every 2-term sign here is exact.hpp's cross_sign, or its filter alone (filter.hpp) with
+// cross_sign where that cannot tell. Two rules of this file differ from that filter, for
+// a reason:
+//  * REL (cross_value): a *value* is wanted, not a sign, so the float cross product is
+//    kept only when exact.hpp's error bound (ERRBOUND (|l| + |r|)) is below 2^-45 of it
+//    -- a relative error below 2^-44 for the distances and depths -- rather than merely
+//    below it; otherwise the exact expansion is summed.
+//  * GEN_BOUND, GEN_MIN (cross44): another expression, each factor a sum of four
+//    coordinates, so its rounding error is bounded by 10 eps times the products of the
+//    absolute coordinate sums, not by 3 eps (|l| + |r|); GEN_MIN is its MINBOUND (below
+//    it a product may have underflowed and the exact accumulator decides).
+constexpr double REL = 0x1p-45;               // relative accuracy demanded of a value
 constexpr double GEN_BOUND = 10.0 * 0x1p-53;  // error bound factor of the 4-term cross
-constexpr double GEN_MIN = 0x1p-900;  // below this bound a product may have underflowed
+constexpr double GEN_MIN = 0x1p-900;          // below this bound: the exact accumulator
 
 inline int sgnd(double v) { return (v > 0.0) - (v < 0.0); }
 
@@ -61,32 +73,28 @@ inline int dot_sign(double a0x, double a0y, double a1x, double a1y, double b0x, 
   return cross_sign(a0y, -a0x, a1y, -a1x, b0x, b0y, b1x, b1y);
 }
 
-// Certified sign of l - r under the float filter, or 2 when the filter cannot tell
-// (also for NaN, infinities and possible underflow).
-inline int filtered(double l, double r) {
-  double det = l - r;
-  double bnd = ERRBOUND * (std::fabs(l) + std::fabs(r));
-  if (bnd >= MINBOUND) {
-    if (det > bnd) return 1;
-    if (-det > bnd) return -1;
-  }
-  return 2;
-}
-
-// (a1 - a0) x (b1 - b0) to a relative error below 2^-44; exactly 0.0 iff it is 0. The
-// float value is kept when its error bound is below 2^-45 of it; otherwise the exact
-// expansion is summed from the smallest component up. (Value range only.)
-inline double cross_value(double a0x, double a0y, double a1x, double a1y, double b0x,
-                          double b0y, double b1x, double b1y) {
-  double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
-  double l = ux * vy, r = uy * vx, det = l - r;
-  double bound = ERRBOUND * (std::fabs(l) + std::fabs(r));
-  if (bound <= REL * std::fabs(det)) return det;
+// The exact (a1 - a0) x (b1 - b0) as an expansion, summed from the smallest component up
+// (cross_value's fallback, out of line: the float test stays small enough to inline).
+[[gnu::noinline]] inline double cross_value_exact(double a0x, double a0y, double a1x,
+                                                  double a1y, double b0x, double b0y,
+                                                  double b1x, double b1y) {
   double e[40];
   int m = cross_expansion(e, a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
   double s = 0.0;
   for (int t = 0; t < m; ++t) s += e[t];
   return s;
+}
+
+// (a1 - a0) x (b1 - b0) to a relative error below 2^-44; exactly 0.0 iff it is 0. The
+// float value is kept when its error bound is below 2^-45 of it (REL); otherwise the
+// exact expansion is summed. (Value range only.)
+inline double cross_value(double a0x, double a0y, double a1x, double a1y, double b0x,
+                          double b0y, double b1x, double b1y) {
+  double ux = a1x - a0x, uy = a1y - a0y, vx = b1x - b0x, vy = b1y - b0y;
+  double l = ux * vy, r = uy * vx, det = l - r;
+  double bound = ERRBOUND * (std::fabs(l) + std::fabs(r));
+  if (__builtin_expect(bound <= REL * std::fabs(det), 1)) return det;
+  return cross_value_exact(a0x, a0y, a1x, a1y, b0x, b0y, b1x, b1y);
 }
 
 // Exact sign of cross((u1 - u2) + (u3 - u4), (v1 - v2) + (v3 - v4)) from the 16
@@ -353,15 +361,11 @@ inline bool walk_take_a(const Scratch& S, i64 i, i64 t, i64 sa, i64 sbm, i64 ea,
   const double* BY = S.BY.data();
   double ax0 = AX[i], ay0 = AY[i], ax1 = AX[i + 1], ay1 = AY[i + 1];
   double bx0 = BX[t], by0 = BY[t], bx1 = BX[t + 1], by1 = BY[t + 1];
-  // c = cross(a1 - a0, b0 - b1): > 0 when -B's edge is CCW of A's (A first)
-  double lft = (ax1 - ax0) * (by0 - by1);
-  double rgt = (ay1 - ay0) * (bx0 - bx1);
-  double det = lft - rgt;
-  double bnd = ERRBOUND * (std::fabs(lft) + std::fabs(rgt));
+  // cross(a1 - a0, b0 - b1): > 0 when -B's edge is CCW of A's (A first)
+  FilterSign f = filter_sign((ax1 - ax0) * (by0 - by1), (ay1 - ay0) * (bx0 - bx1));
   bool ha = i >= sa, hb = t >= sbm, same = ha == hb;
-  bool certain = (bnd >= MINBOUND) & (std::fabs(det) > bnd);  // false for NaN
-  bool ta = same ? det > 0.0 : !ha;
-  if (__builtin_expect(same & !certain & (i < ea) & (t < eb), 0))
+  bool ta = same ? f.sign > 0 : !ha;
+  if (__builtin_expect(same & !f.certain & (i < ea) & (t < eb), 0))
     ta = cross_sign(ax0, ay0, ax1, ay1, bx1, by1, bx0, by0) >= 0;
   return (ta | (t >= eb)) & (i < ea);
 }
@@ -397,10 +401,10 @@ inline int intersects(const Poly& A, const Poly& B, Scratch& S) {
   for (i64 s = 0; s < ea + eb; ++s) {
     bool ta = walk_take_a(S, i, t, sa, sbm, ea, eb);
     Sub e = pick(S, ta, i, t);
-    double lft = (e.p1x - e.p0x) * (e.qy - e.p0y), rgt = (e.p1y - e.p0y) * (e.qx - e.p0x);
-    double c = lft - rgt, bnd = ERRBOUND * (std::fabs(lft) + std::fabs(rgt));
-    int o = (c > 0.0) - (c < 0.0);
-    if (__builtin_expect(!((bnd >= MINBOUND) & (std::fabs(c) > bnd)), 0))
+    FilterSign f =
+        filter_sign((e.p1x - e.p0x) * (e.qy - e.p0y), (e.p1y - e.p0y) * (e.qx - e.p0x));
+    int o = f.sign;
+    if (__builtin_expect(!f.certain, 0))
       o = cross_sign(e.p0x, e.p0y, e.p1x, e.p1y, e.p0x, e.p0y, e.qx, e.qy);
     if (o < 0) return 0;
     zero &= o == 0;
@@ -423,11 +427,7 @@ inline i64 walk(const Poly& A, const Poly& B, Scratch& S) {
   for (i64 k = 0; k < ea + eb; ++k) {
     bool ta = walk_take_a(S, i, t, sa, sbm, ea, eb);
     Sub e = pick(S, ta, i, t);
-    double ex = e.p1x - e.p0x, ey = e.p1y - e.p0y, fx = e.qx - e.p0x, fy = e.qy - e.p0y;
-    double lft = ex * fy, rgt = ey * fx, c = lft - rgt;
-    if (__builtin_expect(ERRBOUND * (std::fabs(lft) + std::fabs(rgt)) > REL * std::fabs(c), 0))
-      c = cross_value(e.p0x, e.p0y, e.p1x, e.p1y, e.p0x, e.p0y, e.qx, e.qy);
-    S.cv[k] = c;
+    S.cv[k] = cross_value(e.p0x, e.p0y, e.p1x, e.p1y, e.p0x, e.p0y, e.qx, e.qy);
     S.kind[k] = ta ? 0 : 1;
     S.ii[k] = i < na ? i : 0;
     i64 w = s + t;
@@ -1036,11 +1036,8 @@ inline i64 pairs(const Side& SA, const Side& SB, const i64* qa, const i64* qb, i
 // ------------------------------------------------------------------------------------
 // point location
 
-// Exact sign of orient((x0, y0), (x1, y1), q): the float filter inline, the exact
-// predicate only when it cannot tell.
+// Exact sign of orient((x0, y0), (x1, y1), q).
 inline int orient0(double x0, double y0, double x1, double y1, double qx, double qy) {
-  int f = filtered((x1 - x0) * (qy - y0), (y1 - y0) * (qx - x0));
-  if (f != 2) return f;
   return cross_sign(x0, y0, x1, y1, x0, y0, qx, qy);
 }
 

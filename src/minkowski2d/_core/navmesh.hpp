@@ -169,9 +169,9 @@ struct NavMesh {
     }
     double ext = std::max(X1 - X0, Y1 - Y0);
     if (!(ext > 0) || !std::isfinite(ext)) ext = 1.0;
-    // the rounding of the cell computation, far below this slack (as in planning.hpp)
+    // planning.hpp's rule (without the planner's 2^-1000 floor, as before)
     const double big = std::max({std::fabs(X0), std::fabs(Y0), std::fabs(X1), std::fabs(Y1)});
-    gslack = (big + ext) * 0x1p-36;
+    gslack = grid_slack(big, ext);
     gcs = ext / std::max(1.0, std::min(2048.0, std::ceil(std::sqrt((double)P))));
     gx0 = X0 - gcs * 0.5;
     gy0 = Y0 - gcs * 0.5;

@@ -32,6 +32,7 @@
 
 #include "convex.hpp"
 #include "exact.hpp"
+#include "filter.hpp"
 #include "parallel.hpp"
 
 namespace mk {
@@ -50,6 +51,13 @@ enum PlanStatus : int {
   PLAN_NO_PATH = 3,       // the goal cannot be reached
   PLAN_OUTSIDE_MESH = 4,  // (navmesh) a point outside the meshed box: mesh a larger one
 };
+
+// The slack of the uniform grids' cell lookups (the planner's below and the navigation
+// mesh's): points and boxes find their cells in floating point (with int64 -> double
+// conversion and, in Planner::blocked, interpolation along a segment), with an error far
+// below this slack; every cell within it of the computed position is visited too. big:
+// the largest |coordinate| of the grid's boxes, ext: their extent.
+inline double grid_slack(double big, double ext) { return (big + ext) * 0x1p-36; }
 
 // Per-thread scratch: stamps deduplicate items met in several grid cells.
 struct PlanScratch {
@@ -437,8 +445,8 @@ struct Planner {
     }
     double ext = std::max(X1 - X0, Y1 - Y0);
     if (!(ext > 0) || !std::isfinite(ext)) ext = std::max(1.0, big);
-    // slack covers the rounding of int64 -> double and of the walk's interpolation
-    slack = (big + ext) * 0x1p-36 + 0x1p-1000;
+    // (and at least 2^-1000: a grid of tiny coordinates keeps a normal slack)
+    slack = grid_slack(big, ext) + 0x1p-1000;
     double per = P > 0 ? area / (double)P : ext * ext;
     // about one piece per cell, at most ~4 cells per item (and 4096 per side)
     cs = std::sqrt(std::max(per, ext * ext / (4.0 * (double)I + 64.0)));
@@ -610,18 +618,17 @@ struct Planner {
     std::uint8_t* __restrict sk = skip.data();
     for (i64 j = i + 1; j < N; ++j) {
       const double ax = X[j], ay = Y[j];
+      // the two corner points certainly on opposite sides of the line a v (filter.hpp)
+      auto apart = [](FilterSign f, FilterSign g) {
+        return f.certain & g.certain & (f.sign != g.sign);
+      };
       // at i: orient(a, v, u) and orient(a, v, w)
-      double l1 = (vx - ax) * (uy - ay), r1 = (vy - ay) * (ux - ax), d1 = l1 - r1;
-      double b1 = ERRBOUND * (std::fabs(l1) + std::fabs(r1));
-      double l2 = (vx - ax) * (wy - ay), r2 = (vy - ay) * (wx - ax), d2 = l2 - r2;
-      double b2 = ERRBOUND * (std::fabs(l2) + std::fabs(r2));
-      const bool sep_i = ((d1 > b1) & (-d2 > b2)) | ((-d1 > b1) & (d2 > b2));
+      const bool sep_i = apart(filter_sign((vx - ax) * (uy - ay), (vy - ay) * (ux - ax)),
+                               filter_sign((vx - ax) * (wy - ay), (vy - ay) * (wx - ax)));
       // at j: orient(v, a, U) and orient(v, a, W)
-      double l3 = (ax - vx) * (UY[j] - vy), r3 = (ay - vy) * (UX[j] - vx), d3 = l3 - r3;
-      double b3 = ERRBOUND * (std::fabs(l3) + std::fabs(r3));
-      double l4 = (ax - vx) * (WY[j] - vy), r4 = (ay - vy) * (WX[j] - vx), d4 = l4 - r4;
-      double b4 = ERRBOUND * (std::fabs(l4) + std::fabs(r4));
-      const bool sep_j = ((d3 > b3) & (-d4 > b4)) | ((-d3 > b3) & (d4 > b4));
+      const bool sep_j =
+          apart(filter_sign((ax - vx) * (UY[j] - vy), (ay - vy) * (UX[j] - vx)),
+                filter_sign((ax - vx) * (WY[j] - vy), (ay - vy) * (WX[j] - vx)));
       sk[j] = (std::uint8_t)(sep_i | sep_j);
     }
   }
