@@ -85,4 +85,13 @@ Out<T> to_numpy(const std::vector<T>& v, std::size_t rows, std::size_t cols) {
   return owned(data, rows, cols);
 }
 
+// (status (n,), group (n,), points (M, 2), offsets (n + 1,)): a planner's answers to n
+// queries (mk::PlanAnswers, planning_queries.hpp)
+template <class Answers>
+nb::tuple answers_tuple(const Answers& A) {
+  std::size_t n = A.st.size();
+  return nb::make_tuple(to_numpy(A.st, n, 0), to_numpy(A.gr, n, 0),
+                        to_numpy(A.pts, A.pts.size() / 2, 2), to_numpy(A.off, n + 1, 0));
+}
+
 }  // namespace mk_bind

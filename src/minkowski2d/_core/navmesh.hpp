@@ -57,6 +57,7 @@
 #include "navmesh_build.hpp"
 #include "navnet.hpp"
 #include "planning.hpp"
+#include "planning_queries.hpp"
 
 namespace mk {
 
@@ -677,6 +678,52 @@ struct MeshSearch {
 inline int MeshPlanner::search(double sx, double sy, double tx, double ty,
                                std::vector<double>& out, MeshScratch& MS) const {
   return MeshSearch(*this, MS, tx, ty).run(sx, sy, out);
+}
+
+// ------------------------------------------------------------------------------------
+// what the bindings run (planning_queries.hpp has the visibility graph's)
+
+// The mesh planner's queries, one scratch for all.
+inline void query_many(const MeshPlanner& mp, const double* s, const double* g,
+                       std::size_t n, PlanAnswers<double>& A) {
+  PlanScratch S;
+  S.init((std::size_t)mp.base.items());
+  MeshScratch MS;
+  MS.init(mp.nids(), mp.M.npoly());
+  query_loop(s, g, n, [&](double sx, double sy, double gx, double gy, std::vector<double>& out,
+                          int& grp) { return mp.query(sx, sy, gx, gy, out, grp, S, MS); }, A);
+}
+
+// One query of the mesh planner.
+inline int query_one(const MeshPlanner& mp, double sx, double sy, double gx, double gy,
+                     std::vector<double>& out, int& grp) {
+  PlanScratch S;
+  S.init((std::size_t)mp.base.items());
+  // kept per thread between calls (query() sizes it to the mesh; every query leaves it
+  // cleared)
+  thread_local MeshScratch MS;
+  return mp.query(sx, sy, gx, gy, out, grp, S, MS);
+}
+
+// The mesh as arrays: vertices (2 per vertex), polygon offsets, polygon vertex ids, flags.
+inline void mesh_arrays(const NavMesh& M, std::vector<double>& xy, std::vector<i64>& off,
+                        std::vector<i64>& pv, std::vector<i64>& fl) {
+  xy.resize(2 * M.vx.size());
+  for (std::size_t i = 0; i < M.vx.size(); ++i) {
+    xy[2 * i] = M.vx[i];
+    xy[2 * i + 1] = M.vy[i];
+  }
+  off.assign(M.poff.begin(), M.poff.end());
+  pv.assign(M.pv.begin(), M.pv.end());
+  fl.assign(M.vflag.begin(), M.vflag.end());
+}
+
+// The zero-width segments of the mesh planner's network, (ax, ay, bx, by) each.
+inline void network_segments(const MeshPlanner& mp, std::vector<double>& seg) {
+  seg.clear();
+  for (std::size_t k = 0; k < mp.net.ea.size(); ++k)
+    seg.insert(seg.end(), {mp.idx(mp.net.ea[k]), mp.idy(mp.net.ea[k]), mp.idx(mp.net.eb[k]),
+                           mp.idy(mp.net.eb[k])});
 }
 
 }  // namespace mk

@@ -199,8 +199,6 @@ struct Planner {
     // walk along the major axis u; the minor axis w varies by at most one unit per unit
     const double pu = alongx ? dpx : dpy, pw = alongx ? dpy : dpx;
     const double qu = alongx ? dqx : dqy, qw = alongx ? dqy : dqx;
-    const double u0 = alongx ? gx0 : gy0, w0 = alongx ? gy0 : gx0;
-    const i64 nu = alongx ? nx : ny, nw = alongx ? ny : nx;
     auto cu = [&](double u) { return alongx ? cellx(u) : celly(u); };
     auto cw = [&](double w) { return alongx ? celly(w) : cellx(w); };
     const double umin = std::min(pu, qu), umax = std::max(pu, qu);
@@ -208,10 +206,6 @@ struct Planner {
     const double slope = (qw - pw) / (qu - pu);
     i64 c0 = cu(umin - slack), c1 = cu(umax + slack);
     const int du = qu >= pu ? 1 : -1, dw = qw >= pw ? 1 : -1;
-    (void)nu;
-    (void)nw;
-    (void)u0;
-    (void)w0;
     for (i64 t = 0; t <= c1 - c0; ++t) {
       i64 c = du > 0 ? c0 + t : c1 - t;
       double ua = (alongx ? gx0 : gy0) + (double)c * cs, ub = ua + cs;
@@ -274,13 +268,11 @@ struct Planner {
   // The group whose union has x in its open interior, or -1.
   int interior_group(T x, T y, PlanScratch& S) const {
     if (cell_off.empty()) return -1;
-    i64 c = celly((double)y) * nx + cellx((double)x);
     std::vector<Cone> cones;
     const T* v = pc.data();
     // a point within `slack` of a cell border may belong to the neighbour's items too
     i64 cxa = cellx((double)x - slack), cxb = cellx((double)x + slack);
     i64 cya = celly((double)y - slack), cyb = celly((double)y + slack);
-    (void)c;
     const std::uint32_t tk = S.next();
     // several obstacles may overlap at x: the answer is the lowest group whose C-obstacle
     // has x in its open interior (the same whatever the order of the grid's cells)
@@ -519,11 +511,9 @@ struct Planner {
                 continue;
               int ax = v[2 * i] != v[2 * i2] ? 0 : 1;
               // overlap along axis ax: the larger of the lower ends, the smaller upper end
-              i64 cand[4] = {i, i2, j, j2};
               auto key = [&](i64 t) { return v[2 * t + ax]; };
               i64 loA = key(i) < key(i2) ? i : i2, hiA = loA == i ? i2 : i;
               i64 loB = key(j) < key(j2) ? j : j2, hiB = loB == j ? j2 : j;
-              (void)cand;
               i64 lo = key(loA) >= key(loB) ? loA : loB;
               i64 hi = key(hiA) <= key(hiB) ? hiA : hiB;
               if (!(key(lo) < key(hi))) continue;
