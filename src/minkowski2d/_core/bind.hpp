@@ -13,6 +13,7 @@
 
 #include <sys/mman.h>
 
+#include "buffer.hpp"
 #include "exact.hpp"
 
 namespace mk_bind {
@@ -65,14 +66,7 @@ Out<T> owned(T* data, std::size_t rows, std::size_t cols) {
   return Out<T>(data, 2, shape, owner);
 }
 
-// Uninitialized scratch (std::vector would zero it: for 2^20 vertices that memset costs
-// more than the merge; untouched pages of a large new[] are never even faulted in).
-template <class T>
-struct Buf {
-  std::unique_ptr<T[]> p;
-  explicit Buf(i64 n) : p(new T[n > 0 ? n : 1]) {}
-  T* data() { return p.get(); }
-};
+using mk::Buf;  // uninitialized scratch (buffer.hpp)
 
 template <class T>
 using Mut2 = nb::ndarray<T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
