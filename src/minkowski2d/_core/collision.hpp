@@ -165,5 +165,83 @@ inline void contains_points(const double* p, const i64* ix, i64 k, const double*
   }
 }
 
+// ------------------------------------------------------------------------------------
+// one pair, one polygon (what the bindings' single calls run)
+
+// The outcome of a single call: code 0 on success, else a Status (RANGE: values the
+// kernels cannot compute exactly) for operand `which` at `vertex`; hit: the answer.
+struct SingleResult {
+  int code = 0, which = 0, hit = 0;
+  i64 vertex = 0;
+};
+
+// One pair: prepare pa[0:na] (int_a: int input) and pb[0:nb], then run `mode` (its row
+// to res for DISTANCE / PENETRATION); GJK's cap gives code INTERNAL.
+inline SingleResult single(const double* pa, i64 na, const double* pb, i64 nb, int mode,
+                           bool int_a, bool int_b, double* res) {
+  SingleResult out;
+  i64 offa[2] = {0, na}, offb[2] = {0, nb};
+  std::vector<i64> ida(na > 0 ? na : 1), idb(nb > 0 ? nb : 1);
+  bool need_len = mode == PENETRATION;
+  std::vector<double> inva(need_len ? na : 1), invb(need_len ? nb : 1);
+  i64 ka, kb, sa, sb;
+  PrepResult r = prep(pa, na, offa, 1, int_a, mode, ida.data(), &ka, &sa, inva.data());
+  if (r.code) {
+    out.code = r.code;
+    out.vertex = r.v;
+    return out;
+  }
+  r = prep(pb, nb, offb, 1, int_b, mode, idb.data(), &kb, &sb, invb.data());
+  if (r.code) {
+    out.code = r.code;
+    out.which = 1;
+    out.vertex = r.v;
+    return out;
+  }
+  Side A{pa, offa, ida.data(), &ka, &sa, inva.data()};
+  Side B{pb, offb, idb.data(), &kb, &sb, invb.data()};
+  i64 q0 = 0;
+  std::int8_t h = 0;
+  i64 g = pairs(A, B, &q0, &q0, 1, mode, &h, res, 1);
+  if (g >= 0)
+    out.code = INTERNAL;  // GJK did not terminate
+  else
+    out.hit = h;
+  return out;
+}
+
+// Point location in one convex polygon p[0:n] (int_p: int input) of the m points pts
+// (int_pts likewise) into out; which 0 = the polygon, 1 = the points.
+inline SingleResult contains_single(const double* p, i64 n, bool int_p, const double* pts,
+                                    i64 m, bool int_pts, bool* out) {
+  SingleResult res;
+  i64 off[2] = {0, n};
+  std::vector<i64> ix(n > 0 ? n : 1);
+  i64 kk, ss;
+  double inv;
+  PrepResult r = prep(p, n, off, 1, int_p, INTERSECTS, ix.data(), &kk, &ss, &inv);
+  if (r.code) {
+    res.code = r.code;
+    res.vertex = r.v;
+    return res;
+  }
+  i64 bad = out_of_range(pts, 0, m, int_pts, false);
+  i64 badf = -1;
+  for (i64 t = 0; t < 2 * m && badf < 0; ++t)
+    if (!(pts[t] - pts[t] == 0.0)) badf = t / 2;
+  if (bad >= 0) {
+    res.code = RANGE;
+    res.which = 1;
+    res.vertex = bad;
+  } else if (badf >= 0) {
+    res.code = NONFINITE;
+    res.which = 1;
+    res.vertex = badf;
+  } else {
+    contains_points(p, ix.data(), kk, pts, m, out);
+  }
+  return res;
+}
+
 }  // namespace coll
 }  // namespace mk
