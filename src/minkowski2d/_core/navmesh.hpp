@@ -3,17 +3,17 @@
 // visibility graph of planning.hpp. minkowski2d.planning chooses between them.
 //
 // The mesh (navmesh_build.hpp). The free space of planning.hpp (the box minus the open
-// interiors of the groups' unions) is, away from zero-width parts, the closure of (box minus every solid
-// piece): the exact overlay (overlay.hpp) computes its boundary as exact edges, inside on
-// the left. The mesh is made only when every boundary vertex is a double (piece vertices
-// always are; a crossing of two piece edges must round to itself, which is decided
-// exactly): otherwise build() says so and the caller keeps the visibility graph. The
-// zero-width parts (segments shared by two groups, or a group and a closed box) are a
-// graph beside the mesh (navnet.hpp), met at its portals (PORTAL). The boundary is
-// traced into simple rings (split where a ring would meet itself), triangulated by
-// polygon.hpp / triangulate.hpp (exact, constrained Delaunay), and the triangles are
-// merged into convex polygons (Hertel-Mehlhorn, strictly convex merges only). Every
-// decision is mk::cross_sign on doubles (exact) or a comparison.
+// interiors of the groups' unions) is, away from zero-width parts, the closure of (box
+// minus every solid piece): the exact overlay (overlay.hpp) computes its boundary as exact
+// edges, inside on the left. The mesh is made only when every boundary vertex is a double
+// (piece vertices always are; a crossing of two piece edges must round to itself, which is
+// decided exactly): otherwise build() says so and the caller keeps the visibility graph.
+// The zero-width parts (segments shared by two groups, or a group and a closed box) are a
+// graph beside the mesh (navnet.hpp), met at its portals (PORTAL). The boundary is traced
+// into simple rings (split where a ring would meet itself), triangulated by polygon.hpp /
+// triangulate.hpp (exact, constrained Delaunay), and the triangles are merged into convex
+// polygons (Hertel-Mehlhorn, strictly convex merges only). Every decision is
+// mk::cross_sign on doubles (exact) or a comparison.
 //
 // Vertices where the free space pinches (the boundary passes twice: two regions, or a
 // region and a hole, touch at a point) are junctions; a vertex where the boundary turns
