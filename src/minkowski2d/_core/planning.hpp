@@ -609,16 +609,12 @@ struct Planner {
     for (i64 j = i + 1; j < N; ++j) {
       const double ax = X[j], ay = Y[j];
       // the two corner points certainly on opposite sides of the line a v (filter.hpp)
-      auto apart = [](FilterSign f, FilterSign g) {
-        return f.certain & g.certain & (f.sign != g.sign);
-      };
       // at i: orient(a, v, u) and orient(a, v, w)
-      const bool sep_i = apart(filter_sign((vx - ax) * (uy - ay), (vy - ay) * (ux - ax)),
-                               filter_sign((vx - ax) * (wy - ay), (vy - ay) * (wx - ax)));
+      const bool sep_i = filter_apart((vx - ax) * (uy - ay), (vy - ay) * (ux - ax),
+                                      (vx - ax) * (wy - ay), (vy - ay) * (wx - ax));
       // at j: orient(v, a, U) and orient(v, a, W)
-      const bool sep_j =
-          apart(filter_sign((ax - vx) * (UY[j] - vy), (ay - vy) * (UX[j] - vx)),
-                filter_sign((ax - vx) * (WY[j] - vy), (ay - vy) * (WX[j] - vx)));
+      const bool sep_j = filter_apart((ax - vx) * (UY[j] - vy), (ay - vy) * (UX[j] - vx),
+                                      (ax - vx) * (WY[j] - vy), (ay - vy) * (WX[j] - vx));
       sk[j] = (std::uint8_t)(sep_i | sep_j);
     }
   }
