@@ -13,6 +13,7 @@
 
 #include <sys/mman.h>
 
+#include "buffer.hpp"
 #include "exact.hpp"
 
 namespace mk_bind {
@@ -65,14 +66,7 @@ Out<T> owned(T* data, std::size_t rows, std::size_t cols) {
   return Out<T>(data, 2, shape, owner);
 }
 
-// Uninitialized scratch (std::vector would zero it: for 2^20 vertices that memset costs
-// more than the merge; untouched pages of a large new[] are never even faulted in).
-template <class T>
-struct Buf {
-  std::unique_ptr<T[]> p;
-  explicit Buf(i64 n) : p(new T[n > 0 ? n : 1]) {}
-  T* data() { return p.get(); }
-};
+using mk::Buf;  // uninitialized scratch (buffer.hpp)
 
 template <class T>
 using Mut2 = nb::ndarray<T, nb::ndim<2>, nb::c_contig, nb::device::cpu>;
@@ -83,6 +77,15 @@ Out<T> to_numpy(const std::vector<T>& v, std::size_t rows, std::size_t cols) {
   T* data = alloc<T>(v.size());
   if (!v.empty()) std::memcpy(data, v.data(), sizeof(T) * v.size());
   return owned(data, rows, cols);
+}
+
+// (status (n,), group (n,), points (M, 2), offsets (n + 1,)): a planner's answers to n
+// queries (mk::PlanAnswers, planning_queries.hpp)
+template <class Answers>
+nb::tuple answers_tuple(const Answers& A) {
+  std::size_t n = A.st.size();
+  return nb::make_tuple(to_numpy(A.st, n, 0), to_numpy(A.gr, n, 0),
+                        to_numpy(A.pts, A.pts.size() / 2, 2), to_numpy(A.off, n + 1, 0));
 }
 
 }  // namespace mk_bind

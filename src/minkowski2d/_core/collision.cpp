@@ -70,46 +70,18 @@ i64 pairs_b(In2<double> pa, In1<i64> offa, In1<i64> ida, In1<i64> ka, In1<i64> s
 
 // single(pa, pb, mode, int_a, int_b, res (1, 7)) -> (code, which, vertex, hit): code 0 on
 // success, else a Status (RANGE: values the kernels cannot compute exactly) for operand
-// `which` (0 = a, 1 = b) at `vertex`; GJK's cap gives code -1.
+// `which` (0 = a, 1 = b) at `vertex`; GJK's cap gives code INTERNAL.
 nb::tuple single_b(In2<double> pa, In2<double> pb, int mode, bool int_a, bool int_b,
                    Mut2<double> res) {
   need(pa.shape(1) == 2 && pb.shape(1) == 2, "single: shape (n, 2) expected");
   need(res.shape(0) >= 1 && res.shape(1) == mk::coll::NCOL, "single: res must be (1, 7)");
-  i64 na = (i64)pa.shape(0), nb_ = (i64)pb.shape(0);
-  int code = 0, which = 0, hit = 0;
-  i64 vertex = 0;
+  mk::coll::SingleResult r;
   {
     nb::gil_scoped_release nogil;
-    i64 offa[2] = {0, na}, offb[2] = {0, nb_};
-    std::vector<i64> ida(na > 0 ? na : 1), idb(nb_ > 0 ? nb_ : 1);
-    bool need_len = mode == mk::coll::PENETRATION;
-    std::vector<double> inva(need_len ? na : 1), invb(need_len ? nb_ : 1);
-    i64 ka, kb, sa, sb;
-    mk::coll::PrepResult r = mk::coll::prep(pa.data(), na, offa, 1, int_a, mode, ida.data(), &ka,
-                                            &sa, inva.data());
-    if (r.code) {
-      code = r.code;
-      vertex = r.v;
-    } else {
-      r = mk::coll::prep(pb.data(), nb_, offb, 1, int_b, mode, idb.data(), &kb, &sb, invb.data());
-      if (r.code) {
-        code = r.code;
-        which = 1;
-        vertex = r.v;
-      } else {
-        mk::coll::Side A{pa.data(), offa, ida.data(), &ka, &sa, inva.data()};
-        mk::coll::Side B{pb.data(), offb, idb.data(), &kb, &sb, invb.data()};
-        i64 q0 = 0;
-        std::int8_t h = 0;
-        i64 g = mk::coll::pairs(A, B, &q0, &q0, 1, mode, &h, res.data(), 1);
-        if (g >= 0)
-          code = mk::INTERNAL;  // GJK did not terminate
-        else
-          hit = h;
-      }
-    }
+    r = mk::coll::single(pa.data(), (i64)pa.shape(0), pb.data(), (i64)pb.shape(0), mode, int_a,
+                         int_b, res.data());
   }
-  return nb::make_tuple(code, which, vertex, hit);
+  return nb::make_tuple(r.code, r.which, r.vertex, r.hit);
 }
 
 // contains_single(p, int_p, pts, int_pts, out) -> (code, which, vertex): which 0 = poly,
@@ -118,39 +90,13 @@ nb::tuple contains_single_b(In2<double> p, bool int_p, In2<double> pts, bool int
                             Mut1<bool> out) {
   need(p.shape(1) == 2 && pts.shape(1) == 2, "contains: shape (n, 2) expected");
   need(out.shape(0) >= pts.shape(0), "contains: out too short");
-  i64 n = (i64)p.shape(0), m = (i64)pts.shape(0);
-  int code = 0, which = 0;
-  i64 vertex = 0;
+  mk::coll::SingleResult r;
   {
     nb::gil_scoped_release nogil;
-    i64 off[2] = {0, n};
-    std::vector<i64> ix(n > 0 ? n : 1);
-    i64 kk, ss;
-    double inv;
-    mk::coll::PrepResult r =
-        mk::coll::prep(p.data(), n, off, 1, int_p, mk::coll::INTERSECTS, ix.data(), &kk, &ss, &inv);
-    if (r.code) {
-      code = r.code;
-      vertex = r.v;
-    } else {
-      i64 bad = mk::coll::out_of_range(pts.data(), 0, m, int_pts, false);
-      i64 badf = -1;
-      for (i64 t = 0; t < 2 * m && badf < 0; ++t)
-        if (!(pts.data()[t] - pts.data()[t] == 0.0)) badf = t / 2;
-      if (bad >= 0) {
-        code = mk::RANGE;
-        which = 1;
-        vertex = bad;
-      } else if (badf >= 0) {
-        code = mk::NONFINITE;
-        which = 1;
-        vertex = badf;
-      } else {
-        mk::coll::contains_points(p.data(), ix.data(), kk, pts.data(), m, out.data());
-      }
-    }
+    r = mk::coll::contains_single(p.data(), (i64)p.shape(0), int_p, pts.data(),
+                                  (i64)pts.shape(0), int_pts, out.data());
   }
-  return nb::make_tuple(code, which, vertex);
+  return nb::make_tuple(r.code, r.which, r.vertex);
 }
 
 }  // namespace

@@ -30,20 +30,8 @@ void bind_mesh_planner(nb::module_& m) {
           "build",
           [](MP& self, In2<double> coords, In1<i64> off, In1<i64> grp, In1<double> box,
              bool open_box, In1<double> meshbox) {
-            auto& B = self.base;
-            B.open_box = open_box;
-            const double* c = coords.data();
-            B.pc.assign(c, c + 2 * coords.shape(0));
-            B.poff.assign(off.data(), off.data() + off.shape(0));
-            B.pgrp.resize(grp.shape(0));
-            for (std::size_t i = 0; i < grp.shape(0); ++i) B.pgrp[i] = (int)grp.data()[i];
-            B.has_box = box.shape(0) == 4;
-            if (B.has_box) {
-              B.bx0 = box.data()[0];
-              B.by0 = box.data()[1];
-              B.bx1 = box.data()[2];
-              B.by1 = box.data()[3];
-            }
+            mk::set_scene(self.base, coords.data(), coords.shape(0), off.data(), off.shape(0),
+                          grp.data(), grp.shape(0), box.data(), box.shape(0), open_box);
             if (meshbox.shape(0) != 4) throw nb::value_error("meshbox: 4 numbers");
             nb::gil_scoped_release nogil;
             return self.build(meshbox.data());
@@ -57,83 +45,46 @@ void bind_mesh_planner(nb::module_& m) {
              int grp = -1, st;
              {
                nb::gil_scoped_release nogil;
-               mk::PlanScratch S;
-               S.init((std::size_t)self.base.items());
-               // kept per thread between calls (query() sizes it to the mesh; every
-               // query leaves it cleared)
-               thread_local mk::MeshScratch MS;
-               st = self.query(sx, sy, gx, gy, out, grp, S, MS);
+               st = mk::query_one(self, sx, sy, gx, gy, out, grp);
              }
              return nb::make_tuple(st, grp, to_numpy(out, out.size() / 2, 2));
            })
       .def("query_many",
            [](const MP& self, In2<double> S0, In2<double> G0) {
-             std::size_t n = S0.shape(0);
-             std::vector<int> st(n), gr(n);
-             std::vector<double> pts;
-             std::vector<i64> off(n + 1, 0);
+             mk::PlanAnswers<double> A;
              {
                nb::gil_scoped_release nogil;
-               mk::PlanScratch S;
-               S.init((std::size_t)self.base.items());
-               mk::MeshScratch MS;
-               MS.init(self.nids(), self.M.npoly());
-               std::vector<double> out;
-               const double* s = S0.data();
-               const double* g = G0.data();
-               for (std::size_t i = 0; i < n; ++i) {
-                 st[i] = self.query(s[2 * i], s[2 * i + 1], g[2 * i], g[2 * i + 1], out, gr[i], S,
-                                    MS);
-                 pts.insert(pts.end(), out.begin(), out.end());
-                 off[i + 1] = (i64)pts.size() / 2;
-               }
+               mk::query_many(self, S0.data(), G0.data(), S0.shape(0), A);
              }
-             return nb::make_tuple(to_numpy(st, n, 0), to_numpy(gr, n, 0),
-                                   to_numpy(pts, pts.size() / 2, 2), to_numpy(off, n + 1, 0));
+             return answers_tuple(A);
            })
       .def("locate",
            [](const MP& self, In2<double> pts) {
-             std::size_t n = pts.shape(0);
-             std::vector<int> res(n);
+             std::vector<int> res(pts.shape(0));
              {
                nb::gil_scoped_release nogil;
-               mk::PlanScratch S;
-               S.init((std::size_t)self.base.items());
-               const double* p = pts.data();
-               for (std::size_t i = 0; i < n; ++i) {
-                 double x = p[2 * i], y = p[2 * i + 1];
-                 res[i] = !self.base.in_box(x, y) ? -2 : self.base.interior_group(x, y, S);
-               }
+               mk::locate_points(self.base, pts.data(), pts.shape(0), res.data());
              }
-             return to_numpy(res, n, 0);
+             return to_numpy(res, res.size(), 0);
            })
       .def("segment_free",
            [](const MP& self, double px, double py, double qx, double qy) {
-             mk::PlanScratch S;
-             S.init((std::size_t)self.base.items());
-             return !self.base.blocked(px, py, qx, qy, S);
+             return mk::segment_free(self.base, px, py, qx, qy);
            })
       // (vertices (n, 2), polygon offsets (P + 1,), polygon vertex ids, flags (n,))
       .def("mesh",
            [](const MP& self) {
-             const auto& M = self.M;
-             std::vector<double> xy(2 * M.vx.size());
-             for (std::size_t i = 0; i < M.vx.size(); ++i) {
-               xy[2 * i] = M.vx[i];
-               xy[2 * i + 1] = M.vy[i];
-             }
-             std::vector<i64> off(M.poff.begin(), M.poff.end()), pv(M.pv.begin(), M.pv.end());
-             std::vector<i64> fl(M.vflag.begin(), M.vflag.end());
-             return nb::make_tuple(to_numpy(xy, M.vx.size(), 2), to_numpy(off, off.size(), 0),
+             std::vector<double> xy;
+             std::vector<i64> off, pv, fl;
+             mk::mesh_arrays(self.M, xy, off, pv, fl);
+             return nb::make_tuple(to_numpy(xy, xy.size() / 2, 2), to_numpy(off, off.size(), 0),
                                    to_numpy(pv, pv.size(), 0), to_numpy(fl, fl.size(), 0));
            })
       // the zero-width segments (k, 4): (ax, ay, bx, by) each
       .def("zero_width",
            [](const MP& self) {
              std::vector<double> seg;
-             for (std::size_t k = 0; k < self.net.ea.size(); ++k)
-               seg.insert(seg.end(), {self.idx(self.net.ea[k]), self.idy(self.net.ea[k]),
-                                      self.idx(self.net.eb[k]), self.idy(self.net.eb[k])});
+             mk::network_segments(self, seg);
              return to_numpy(seg, seg.size() / 4, 4);
            })
       // (nodes expanded, nodes pushed) by the last query

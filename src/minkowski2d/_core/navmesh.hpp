@@ -2,18 +2,18 @@
 // any-angle search on it (Polyanya: Cui, Harabor and Grastien, IJCAI 2017), beside the
 // visibility graph of planning.hpp. minkowski2d.planning chooses between them.
 //
-// The mesh. The free space of planning.hpp (the box minus the open interiors of the
-// groups' unions) is, away from zero-width parts, the closure of (box minus every solid
-// piece): the exact overlay (overlay.hpp) computes its boundary as exact edges, inside on
-// the left. The mesh is made only when every boundary vertex is a double (piece vertices
-// always are; a crossing of two piece edges must round to itself, which is decided
-// exactly): otherwise build() says so and the caller keeps the visibility graph. The
-// zero-width parts (segments shared by two groups, or a group and a closed box) are a
-// graph beside the mesh (navnet.hpp), met at its portals (PORTAL). The boundary is
-// traced into simple rings (split where a ring would meet itself), triangulated by
-// polygon.hpp / triangulate.hpp (exact, constrained Delaunay), and the triangles are
-// merged into convex polygons (Hertel-Mehlhorn, strictly convex merges only). Every
-// decision is mk::cross_sign on doubles (exact) or a comparison.
+// The mesh (navmesh_build.hpp). The free space of planning.hpp (the box minus the open
+// interiors of the groups' unions) is, away from zero-width parts, the closure of (box
+// minus every solid piece): the exact overlay (overlay.hpp) computes its boundary as exact
+// edges, inside on the left. The mesh is made only when every boundary vertex is a double
+// (piece vertices always are; a crossing of two piece edges must round to itself, which is
+// decided exactly): otherwise build() says so and the caller keeps the visibility graph.
+// The zero-width parts (segments shared by two groups, or a group and a closed box) are a
+// graph beside the mesh (navnet.hpp), met at its portals (PORTAL). The boundary is traced
+// into simple rings (split where a ring would meet itself), triangulated by polygon.hpp /
+// triangulate.hpp (exact, constrained Delaunay), and the triangles are merged into convex
+// polygons (Hertel-Mehlhorn, strictly convex merges only). Every decision is
+// mk::cross_sign on doubles (exact) or a comparison.
 //
 // Vertices where the free space pinches (the boundary passes twice: two regions, or a
 // region and a hole, touch at a point) are junctions; a vertex where the boundary turns
@@ -50,448 +50,16 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "exact.hpp"
-#include "exactnum.hpp"
+#include "navmesh_build.hpp"
 #include "navnet.hpp"
-#include "overlay.hpp"
 #include "planning.hpp"
-#include "polygon.hpp"
-#include "triangulate.hpp"
+#include "planning_queries.hpp"
 
 namespace mk {
-
-enum MeshStatus : int {
-  MESH_OK = 0,
-  MESH_INEXACT = 1,     // a boundary vertex (a crossing of piece edges) is not a double
-  MESH_FAILED = 3,      // an internal check failed (the caller keeps the visibility graph)
-};
-
-// PORTAL: an end of a zero-width segment (navnet.hpp) on the mesh
-enum MeshFlag : std::uint8_t { CORNER = 1, JUNCTION = 2, PORTAL = 4 };
-
-inline int orient_d(double ax, double ay, double bx, double by, double cx, double cy) {
-  return cross_sign(ax, ay, bx, by, ax, ay, cx, cy);
-}
-
-// (row, item) pairs as CSR: off (n + 1 offsets) and, per row, its items in the pairs' order
-template <class T>
-inline void csr_from_pairs(int n, const std::vector<std::pair<int, T>>& pairs,
-                           std::vector<int>& off, std::vector<T>& items) {
-  off.assign(n + 1, 0);
-  for (const auto& pr : pairs) ++off[pr.first + 1];
-  for (int r = 0; r < n; ++r) off[r + 1] += off[r];
-  items.resize(pairs.size());
-  std::vector<int> fill(off.begin(), off.end() - 1);
-  for (const auto& pr : pairs) items[fill[pr.first]++] = pr.second;
-}
-
-struct NavMesh {
-  std::vector<double> vx, vy;       // vertices (exact doubles)
-  std::vector<std::uint8_t> vflag;  // CORNER, JUNCTION
-  std::vector<int> vprev, vnext;    // a corner's neighbours along the boundary
-  std::vector<int> poff{0}, pv;     // convex polygons, counter-clockwise (CSR)
-  std::vector<int> pn, pe;          // per polygon edge: neighbour (-1: boundary), twin edge
-  std::vector<int> vpoff, vp;       // polygons around each vertex (CSR)
-  // a uniform grid over the polygons' boxes (for locate)
-  std::vector<double> pbox;
-  double gx0 = 0, gy0 = 0, gcs = 1, gslack = 0;
-  i64 gnx = 1, gny = 1;
-  std::vector<i64> goff;
-  std::vector<int> gitems;
-
-  int npoly() const { return (int)poff.size() - 1; }
-  int nvert() const { return (int)vx.size(); }
-  int orient(int a, int b, int c) const {
-    return orient_d(vx[a], vy[a], vx[b], vy[b], vx[c], vy[c]);
-  }
-
-  i64 cellx(double x) const {
-    double c = std::floor((x - gx0) / gcs);
-    if (!(c >= 0)) return 0;
-    if (c >= (double)gnx) return gnx - 1;
-    return (i64)c;
-  }
-  i64 celly(double y) const {
-    double c = std::floor((y - gy0) / gcs);
-    if (!(c >= 0)) return 0;
-    if (c >= (double)gny) return gny - 1;
-    return (i64)c;
-  }
-
-  // polygons containing (x, y) (closed)
-  void locate(double x, double y, std::vector<int>& out) const {
-    out.clear();
-    if (goff.empty()) return;
-    // a point near a cell border may belong to the neighbour's polygons too
-    const double sl = gslack;
-    i64 xa = cellx(x - sl), xb = cellx(x + sl), ya = celly(y - sl), yb = celly(y + sl);
-    for (i64 r = ya; r <= yb; ++r)
-      for (i64 c = xa; c <= xb; ++c) {
-        i64 cell = r * gnx + c;
-        for (i64 e = goff[cell]; e < goff[cell + 1]; ++e) {
-          int p = gitems[e];
-          const double* b = pbox.data() + 4 * p;
-          if (x < b[0] || x > b[2] || y < b[1] || y > b[3]) continue;
-          bool in = true;
-          for (int i = poff[p]; in && i < poff[p + 1]; ++i) {
-            int a = pv[i], bb = pv[i + 1 < poff[p + 1] ? i + 1 : poff[p]];
-            in = orient_d(vx[a], vy[a], vx[bb], vy[bb], x, y) >= 0;
-          }
-          if (in && std::find(out.begin(), out.end(), p) == out.end()) out.push_back(p);
-        }
-      }
-  }
-
-  void build_grid() {
-    const int P = npoly();
-    pbox.assign(4 * (std::size_t)P, 0.0);
-    double X0 = 0, Y0 = 0, X1 = 1, Y1 = 1;
-    for (int p = 0; p < P; ++p) {
-      double* b = pbox.data() + 4 * p;
-      b[0] = b[2] = vx[pv[poff[p]]];
-      b[1] = b[3] = vy[pv[poff[p]]];
-      for (int i = poff[p]; i < poff[p + 1]; ++i) {
-        b[0] = std::min(b[0], vx[pv[i]]);
-        b[1] = std::min(b[1], vy[pv[i]]);
-        b[2] = std::max(b[2], vx[pv[i]]);
-        b[3] = std::max(b[3], vy[pv[i]]);
-      }
-      if (p == 0) {
-        X0 = b[0], Y0 = b[1], X1 = b[2], Y1 = b[3];
-      } else {
-        X0 = std::min(X0, b[0]), Y0 = std::min(Y0, b[1]);
-        X1 = std::max(X1, b[2]), Y1 = std::max(Y1, b[3]);
-      }
-    }
-    double ext = std::max(X1 - X0, Y1 - Y0);
-    if (!(ext > 0) || !std::isfinite(ext)) ext = 1.0;
-    // the rounding of the cell computation, far below this slack (as in planning.hpp)
-    const double big = std::max({std::fabs(X0), std::fabs(Y0), std::fabs(X1), std::fabs(Y1)});
-    gslack = (big + ext) * 0x1p-36;
-    gcs = ext / std::max(1.0, std::min(2048.0, std::ceil(std::sqrt((double)P))));
-    gx0 = X0 - gcs * 0.5;
-    gy0 = Y0 - gcs * 0.5;
-    gnx = (i64)std::ceil((X1 - gx0) / gcs) + 1;
-    gny = (i64)std::ceil((Y1 - gy0) / gcs) + 1;
-    goff.assign(gnx * gny + 1, 0);
-    auto range = [&](int p, i64& xa, i64& xb, i64& ya, i64& yb) {
-      const double* b = pbox.data() + 4 * p;
-      const double sl = gslack;
-      xa = cellx(b[0] - sl), xb = cellx(b[2] + sl), ya = celly(b[1] - sl), yb = celly(b[3] + sl);
-    };
-    for (int p = 0; p < P; ++p) {
-      i64 xa, xb, ya, yb;
-      range(p, xa, xb, ya, yb);
-      for (i64 r = ya; r <= yb; ++r)
-        for (i64 c = xa; c <= xb; ++c) goff[r * gnx + c + 1] += 1;
-    }
-    for (i64 c = 0; c < gnx * gny; ++c) goff[c + 1] += goff[c];
-    gitems.assign(goff[gnx * gny], 0);
-    std::vector<i64> fill(goff.begin(), goff.end() - 1);
-    for (int p = 0; p < P; ++p) {
-      i64 xa, xb, ya, yb;
-      range(p, xa, xb, ya, yb);
-      for (i64 r = ya; r <= yb; ++r)
-        for (i64 c = xa; c <= xb; ++c) gitems[fill[r * gnx + c]++] = p;
-    }
-  }
-
-  // ------------------------------------------------------------------ build
-  // From the solid pieces of B (convexified) and the meshed box mb (x0, y0, x1, y1).
-  int build(const Planner<double>& B, const double* mb) {
-    namespace o = ov;
-    o::Geo g;
-    std::vector<o::EdgeIn> in;
-    const double* c = B.pc.data();
-    for (i64 p = 0; p < B.P; ++p) {
-      i64 first = (i64)g.pts.size(), n = B.poff[p + 1] - B.poff[p];
-      for (i64 i = B.poff[p]; i < B.poff[p + 1]; ++i) g.point(o::dd(c[2 * i]), o::dd(c[2 * i + 1]));
-      o::add_ring(g, first, n, 1, 1, in);
-    }
-    {
-      i64 first = (i64)g.pts.size();
-      g.point(o::dd(mb[0]), o::dd(mb[1]));
-      g.point(o::dd(mb[2]), o::dd(mb[1]));
-      g.point(o::dd(mb[2]), o::dd(mb[3]));
-      g.point(o::dd(mb[0]), o::dd(mb[3]));
-      o::add_ring(g, first, 4, 1, 0, in);
-    }
-    o::Overlay ovl(g);
-    std::vector<o::BEdge> be;
-    ovl.run(in, o::DIFFERENCE, be);
-    if (ovl.exceeded()) return MESH_FAILED;
-    // vertices: exact doubles, merged by coordinates
-    std::vector<i64> used;
-    used.reserve(2 * be.size());
-    for (const o::BEdge& e : be) {
-      used.push_back(e.from);
-      used.push_back(e.to);
-    }
-    std::sort(used.begin(), used.end());
-    used.erase(std::unique(used.begin(), used.end()), used.end());
-    std::vector<double> ux(used.size()), uy(used.size());
-    for (std::size_t k = 0; k < used.size(); ++k) {
-      const o::Vert& V = g.verts[used[k]];
-      if (V.p >= 0) {
-        ux[k] = g.pts[V.p].x.hi;
-        uy[k] = g.pts[V.p].y.hi;
-        continue;
-      }
-      double x, y;
-      g.rounded(used[k], x, y);
-      if (!(x - x == 0) || !(y - y == 0)) return MESH_INEXACT;
-      Dy X, Y, W;
-      g.exact(used[k], X, Y, W);
-      if ((X - Dy(x) * W).sign() != 0 || (Y - Dy(y) * W).sign() != 0) return MESH_INEXACT;
-      ux[k] = x;
-      uy[k] = y;
-    }
-    std::vector<int> ord(used.size());
-    for (std::size_t k = 0; k < ord.size(); ++k) ord[k] = (int)k;
-    std::sort(ord.begin(), ord.end(), [&](int a, int b) {
-      return uy[a] < uy[b] || (uy[a] == uy[b] && ux[a] < ux[b]);
-    });
-    std::vector<int> uid(used.size());
-    vx.clear();
-    vy.clear();
-    for (std::size_t t = 0; t < ord.size(); ++t) {
-      int k = ord[t];
-      if (t == 0 || ux[k] != vx.back() || uy[k] != vy.back()) {
-        vx.push_back(ux[k]);
-        vy.push_back(uy[k]);
-      }
-      uid[k] = (int)vx.size() - 1;
-    }
-    auto mid = [&](i64 gv) {
-      return uid[std::lower_bound(used.begin(), used.end(), gv) - used.begin()];
-    };
-    const int nv = nvert();
-    std::vector<int> efrom, eto;
-    for (const o::BEdge& e : be) {
-      int a = mid(e.from), b = mid(e.to);
-      if (a == b) return MESH_FAILED;
-      efrom.push_back(a);
-      eto.push_back(b);
-    }
-    const int ne = (int)efrom.size();
-    // out-edges per vertex, in angle order where several leave
-    std::vector<int> ooff(nv + 1, 0), oe(ne);
-    for (int e = 0; e < ne; ++e) ++ooff[efrom[e] + 1];
-    for (int q = 0; q < nv; ++q) ooff[q + 1] += ooff[q];
-    {
-      std::vector<int> fill(ooff.begin(), ooff.end() - 1);
-      for (int e = 0; e < ne; ++e) oe[fill[efrom[e]]++] = e;
-    }
-    auto upper = [&](int p, int q) {
-      return vy[q] > vy[p] || (vy[q] == vy[p] && vx[q] > vx[p]);
-    };
-    auto before = [&](int p, int a, int b) {  // direction p -> a before p -> b (ccw from +x)
-      bool ua = upper(p, a), ub = upper(p, b);
-      if (ua != ub) return ua;
-      return orient(p, a, b) > 0;
-    };
-    for (int q = 0; q < nv; ++q)
-      if (ooff[q + 1] - ooff[q] > 1)
-        std::sort(oe.begin() + ooff[q], oe.begin() + ooff[q + 1],
-                  [&](int e, int f) { return before(q, eto[e], eto[f]); });
-    // next edge: the first one clockwise from the way back
-    std::vector<int> nxt(ne);
-    for (int e = 0; e < ne; ++e) {
-      const int q = eto[e], back = efrom[e], lo = ooff[q], hi = ooff[q + 1];
-      if (hi - lo == 0) return MESH_FAILED;
-      if (hi - lo == 1) {
-        nxt[e] = oe[lo];
-        continue;
-      }
-      // the last out-edge before the back direction (in ccw order), cyclically
-      int best = oe[hi - 1];
-      for (int k = lo; k < hi; ++k)
-        if (before(q, eto[oe[k]], back)) best = oe[k];
-      nxt[e] = best;
-    }
-    // rings, split where one would meet itself
-    std::vector<std::vector<int>> rings;
-    {
-      std::vector<char> seen(ne, 0);
-      std::vector<int> pos(nv, -1), st;
-      for (int e0 = 0; e0 < ne; ++e0) {
-        if (seen[e0]) continue;
-        st.clear();
-        int e = e0;
-        while (!seen[e]) {
-          seen[e] = 1;
-          const int x = efrom[e];
-          if (pos[x] >= 0) {
-            const int p0 = pos[x];
-            rings.emplace_back(st.begin() + p0, st.end());
-            for (std::size_t t = p0 + 1; t < st.size(); ++t) pos[st[t]] = -1;
-            st.resize(p0 + 1);
-          } else {
-            pos[x] = (int)st.size();
-            st.push_back(x);
-          }
-          e = nxt[e];
-        }
-        if (e != e0) return MESH_FAILED;
-        rings.emplace_back(st.begin(), st.end());
-        for (int x : st) pos[x] = -1;
-      }
-    }
-    // orientation at each ring's lowest vertex: counter-clockwise rings bound a region
-    std::vector<double> xy;
-    std::vector<i64> roff{0};
-    std::vector<int> rv;  // mesh vertex of each ring point
-    std::vector<char> ccw;
-    for (auto& r : rings) {
-      const int k = (int)r.size();
-      if (k < 3) return MESH_FAILED;
-      int lo = 0;
-      for (int t = 1; t < k; ++t)
-        if (vy[r[t]] < vy[r[lo]] || (vy[r[t]] == vy[r[lo]] && vx[r[t]] < vx[r[lo]])) lo = t;
-      int s = orient(r[(lo + k - 1) % k], r[lo], r[(lo + 1) % k]);
-      if (s == 0) return MESH_FAILED;
-      ccw.push_back(s > 0);
-      for (int x : r) {
-        xy.push_back(vx[x]);
-        xy.push_back(vy[x]);
-        rv.push_back(x);
-      }
-      roff.push_back((i64)rv.size());
-    }
-    // flags: pinch points (several out-edges) and right turns (corners)
-    vflag.assign(nv, 0);
-    vprev.assign(nv, -1);
-    vnext.assign(nv, -1);
-    for (int e = 0; e < ne; ++e) {
-      const int q = eto[e];
-      if (ooff[q + 1] - ooff[q] > 1) {
-        vflag[q] = JUNCTION;
-      } else if (orient(efrom[e], q, eto[nxt[e]]) < 0) {
-        vflag[q] = CORNER;
-        vprev[q] = efrom[e];
-        vnext[q] = eto[nxt[e]];
-      }
-    }
-    // triangles
-    std::vector<i64> tri;
-    if (!rings.empty()) {
-      polygon::Work<double> w(xy.data(), roff.data());
-      w.cross_reason = POLYGONS_OVERLAP;
-      for (std::size_t r = 0; r < rings.size(); ++r) {
-        polygon::Problem pr = w.add_ring((i64)r, ccw[r] != 0);
-        if (!pr.ok()) return MESH_FAILED;
-      }
-      w.close_rings();
-      polygon::Problem pr = w.run();
-      if (!pr.ok()) return MESH_FAILED;
-      try {
-        polygon::triangulate_work(w, tri, true);
-      } catch (const std::exception&) {
-        return MESH_FAILED;
-      }
-    }
-    pv.clear();
-    poff.assign(1, 0);
-    for (std::size_t t = 0; t + 2 < tri.size(); t += 3) {
-      for (int q = 0; q < 3; ++q) pv.push_back(rv[tri[t + q]]);
-      poff.push_back((int)pv.size());
-    }
-    link();
-    merge_convex();
-    link();
-    // polygons around each vertex
-    std::vector<std::pair<int, int>> around;
-    around.reserve(pv.size());
-    for (int p = 0; p < npoly(); ++p)
-      for (int i = poff[p]; i < poff[p + 1]; ++i) around.push_back({pv[i], p});
-    csr_from_pairs(nv, around, vpoff, vp);
-    build_grid();
-    return MESH_OK;
-  }
-
-  // neighbours and twin edges by sorting the edges on their unordered ends
-  void link() {
-    const int H = (int)pv.size();
-    pn.assign(H, -1);
-    pe.assign(H, -1);
-    std::vector<int> owner(H);
-    for (int p = 0; p < npoly(); ++p)
-      for (int i = poff[p]; i < poff[p + 1]; ++i) owner[i] = p;
-    auto nxt = [&](int i) { return i + 1 < poff[owner[i] + 1] ? i + 1 : poff[owner[i]]; };
-    std::vector<std::pair<std::pair<int, int>, int>> key(H);
-    for (int i = 0; i < H; ++i) {
-      int a = pv[i], b = pv[nxt(i)];
-      key[i] = {{std::min(a, b), std::max(a, b)}, i};
-    }
-    std::sort(key.begin(), key.end());
-    for (int q = 0; q + 1 < H; ++q) {
-      if (key[q].first != key[q + 1].first) continue;
-      int x = key[q].second, y = key[q + 1].second;
-      pn[x] = owner[y];
-      pe[x] = y - poff[owner[y]];
-      pn[y] = owner[x];
-      pe[y] = x - poff[owner[x]];
-      ++q;
-    }
-  }
-
-  // Hertel-Mehlhorn: remove a diagonal when both of its ends stay strictly convex
-  void merge_convex() {
-    const int P = npoly();
-    std::vector<std::vector<int>> poly(P);
-    for (int p = 0; p < P; ++p) poly[p].assign(pv.begin() + poff[p], pv.begin() + poff[p + 1]);
-    std::vector<int> alive(P, 1), rep(P);
-    for (int p = 0; p < P; ++p) rep[p] = p;
-    auto find = [&](int a) {
-      while (rep[a] != a) a = rep[a] = rep[rep[a]];
-      return a;
-    };
-    // diagonals in the original triangulation, each once
-    for (int p = 0; p < P; ++p)
-      for (int i = poff[p]; i < poff[p + 1]; ++i) {
-        if (pn[i] < 0 || pn[i] < p) continue;
-        const int a = pv[i], b = pv[i + 1 < poff[p + 1] ? i + 1 : poff[p]];
-        int A = find(p), Bq = find(pn[i]);
-        if (A == Bq) continue;
-        std::vector<int>& X = poly[A];
-        std::vector<int>& Y = poly[Bq];
-        // X has a -> b, Y has b -> a
-        int ia = -1, jb = -1;
-        for (int t = 0; t < (int)X.size(); ++t)
-          if (X[t] == a && X[(t + 1) % X.size()] == b) ia = t;
-        for (int t = 0; t < (int)Y.size(); ++t)
-          if (Y[t] == b && Y[(t + 1) % Y.size()] == a) jb = t;
-        if (ia < 0 || jb < 0) continue;
-        const int nX = (int)X.size(), nY = (int)Y.size();
-        // merged ring: X from b around to a, then Y from a around to b (exclusive ends)
-        std::vector<int> M;
-        for (int t = 0; t < nX; ++t) M.push_back(X[(ia + 1 + t) % nX]);  // b ... a
-        for (int t = 2; t < nY; ++t) M.push_back(Y[(jb + t) % nY]);       // after a ... before b
-        // convex at a and b
-        const int m = (int)M.size();
-        bool ok = true;
-        for (int t = 0; t < m && ok; ++t)
-          if (M[t] == a || M[t] == b)
-            ok = orient(M[(t + m - 1) % m], M[t], M[(t + 1) % m]) > 0;
-        if (!ok) continue;
-        poly[A] = std::move(M);
-        poly[Bq].clear();
-        alive[Bq] = 0;
-        rep[Bq] = A;
-      }
-    pv.clear();
-    poff.assign(1, 0);
-    for (int p = 0; p < P; ++p)
-      if (alive[p]) {
-        pv.insert(pv.end(), poly[p].begin(), poly[p].end());
-        poff.push_back((int)pv.size());
-      }
-  }
-};
 
 // ------------------------------------------------------------------------------------
 // the search
@@ -794,227 +362,305 @@ struct MeshPlanner {
   }
 
   int search(double sx, double sy, double tx, double ty, std::vector<double>& out,
-             MeshScratch& MS) const {
-    std::vector<Root>& roots = MS.roots;
-    std::vector<Node>& nodes = MS.nodes;
+             MeshScratch& MS) const;
+};
+
+// One query's search (MeshPlanner::search): Polyanya's nodes over the planner's mesh and
+// network, kept in the query's scratch, towards the target (tx, ty).
+struct MeshSearch {
+  using Root = MeshRoot;
+  using Node = MeshNode;
+  using QE = std::pair<double, int>;
+  const MeshPlanner& P;
+  const NavMesh& M;
+  MeshScratch& MS;
+  std::vector<Root>& roots;
+  std::vector<Node>& nodes;
+  std::vector<QE>& heap;
+  const double tx, ty;
+
+  MeshSearch(const MeshPlanner& planner, MeshScratch& ms, double tx_, double ty_)
+      : P(planner), M(planner.M), MS(ms), roots(ms.roots), nodes(ms.nodes), heap(ms.heap),
+        tx(tx_), ty(ty_) {
     roots.clear();
     nodes.clear();
-    using QE = std::pair<double, int>;
-    std::vector<QE>& heap = MS.heap;
     heap.clear();
-    auto push = [&](const Node& N) {
-      nodes.push_back(N);
-      heap.push_back({N.f, (int)nodes.size() - 1});
-      std::push_heap(heap.begin(), heap.end(), std::greater<QE>());
-      ++n_pushed;
-    };
-    auto push_final = [&](int root, double g) {
-      Node N{};
-      N.f = N.g = g;
-      N.kind = 2;
-      N.root = root;
-      push(N);
-    };
-    auto allowed = [&](const Node& V, double x, double y) {
-      if (V.restr == 0) return true;
-      return V.restr * side(V.R, M.vx[V.v], M.vy[V.v], x, y) >= 0;
-    };
-    auto push_interval = [&](int root, int nb, int k, const Lim& L, const Lim& R) {
-      const int c = bsub[M.poff[nb] + k];
-      if (prune && c >= 0 && !target_side(MS, nb, c)) return;
-      Node N{};
-      N.kind = 0;
-      N.root = root;
-      N.poly = nb;
-      N.k = k;
-      N.L = L;
-      N.R = R;
-      N.g = roots[root].g;
-      N.f = N.g + heuristic(N, roots[root], tx, ty);
-      push(N);
-    };
-    auto push_vertex = [&](int v, int parent, double g, int restr, int e1, const Lim& line,
-                           int on_net = 0) {
-      if (!(g < MS.best[v])) return;
-      if (MS.best[v] == std::numeric_limits<double>::infinity()) MS.touched.push_back(v);
-      MS.best[v] = g;
-      Node N{};
-      N.kind = 1;
-      N.v = v;
-      N.root = parent;
-      N.g = g;
-      N.f = g + dist(idx(v), idy(v), tx, ty);
-      N.restr = restr;
-      N.e1 = e1;
-      N.net = on_net || v >= M.nvert();
-      N.R = line;
-      push(N);
-    };
-    // along the zero-width segments from vertex v (the root `root`, reached with g): a
-    // mesh vertex reached this way expands its whole fan; the goal on the network ends
-    auto expand_net = [&](int root, int v, double g) {
-      for (const auto& [w, d] : MS.gatt)
-        if (w == v) push_final(root, g + d);
-      if (!net.on(v)) return;
-      for (int t = net.off[v]; t < net.off[v + 1]; ++t) {
-        const int w = net.adj[t];
-        push_vertex(w, root, g + dist(idx(v), idy(v), idx(w), idy(w)), 0, -1, Lim{});
-      }
-    };
-    // a mesh vertex the goal on the network is reached from (an end of its segment or
-    // stub that is no portal: it is one for this query)
-    auto goal_end = [&](int v) {
-      for (const auto& wd : MS.gatt)
-        if (wd.first == v) return true;
-      return false;
-    };
-    // a path from the root (rx, ry) may bend at vertex v: at a junction every way, at a
-    // corner towards the obstacle there -- the side(s) of the line root-v that the
-    // corner's boundary edges lie on (both when the line runs into the obstacle)
-    // (V: the vertex node whose root this is -- its restriction must allow v; the length
-    // test first, the cheapest to fail: push_vertex would refuse the node the same way)
-    auto bend = [&](int v, int root, double rx, double ry, double g, const Node* V) {
-      const double gv = g + dist(rx, ry, M.vx[v], M.vy[v]);
-      if (!(gv < MS.best[v])) return;
-      if (V && !allowed(*V, M.vx[v], M.vy[v])) return;
-      if (M.vflag[v] & JUNCTION) {
-        push_vertex(v, root, gv, 0, -1, Lim{});
-        return;
-      }
-      // a portal where no path bends in the mesh: on along its zero-width segments only
-      const bool portal = (M.vflag[v] & PORTAL) || goal_end(v);
-      if (!(M.vflag[v] & CORNER)) {
-        if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
-        return;
-      }
-      const int p = M.vprev[v], q = M.vnext[v];
-      const int sp = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[p], M.vy[p]);
-      const int sq = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[q], M.vy[q]);
-      const int restr = (sp >= 0 && sq >= 0) ? 1 : (sp <= 0 && sq <= 0) ? -1 : 0;
-      // the line root-v runs into the obstacle: no shortest path bends here (every way
-      // out of v turns away from the obstacle, and the root sees past v on both sides)
-      if (restr == 0) {
-        if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
-        return;
-      }
-      // the edge of the corner nearest the ray beyond v (a turn of less than 180 degrees
-      // from it towards the obstacle): a shortest path bending at v leaves between that
-      // ray and this edge
-      const int turn = orient_d(M.vx[v], M.vy[v], M.vx[p], M.vy[p], M.vx[q], M.vy[q]);
-      const int e1 = turn == 0 ? -1 : restr * turn > 0 ? p : q;
-      // that edge runs on along the line root-v: the path goes straight on (no bend)
-      if (e1 >= 0 && orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[e1], M.vy[e1]) == 0) {
-        if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
-        return;
-      }
-      push_vertex(v, root, gv, restr, e1, Lim{rx, ry, M.vx[v], M.vy[v]});
-    };
-    // Is polygon Z (around the corner of vertex node V) wholly beyond the line through
-    // the corner and its edge e1 (strictly, away from the ray beyond the corner)? Z lies
-    // in the cone at the corner between its two neighbours in Z (Z is convex).
-    auto beyond_edge = [&](const Node& V, int Z) {
-      const int off = M.poff[Z], m = M.poff[Z + 1] - off;
-      const int v = V.v, e = V.e1;
-      int i = 0;
-      while (i < m && M.pv[off + i] != v) ++i;
-      if (i == m) return false;
-      const int za = M.pv[off + (i + 1) % m], zb = M.pv[off + (i + m - 1) % m];
-      const double cx = M.vx[v], cy = M.vy[v], ex = M.vx[e], ey = M.vy[e];
-      return V.restr * orient_d(cx, cy, ex, ey, M.vx[za], M.vy[za]) > 0 &&
-             V.restr * orient_d(cx, cy, ex, ey, M.vx[zb], M.vy[zb]) > 0;
-    };
-    // does a bridge ending at vertex v separate polygon Z from every target polygon?
-    auto cut_off = [&](int v, int Z) {
-      for (int t = vboff[v]; t < vboff[v + 1]; ++t)
-        if (!target_side(MS, Z, vb[t])) return true;
-      return false;
-    };
-    // a root at point (x, y) (vertex v or -1): nodes for the far edges of its polygons
-    auto expand_point = [&](int root, const std::vector<int>& fan, const Node* V) {
-      const double rx = roots[root].x, ry = roots[root].y, g = roots[root].g;
-      for (int Z : fan) {
-        if (V && V->e1 >= 0 && beyond_edge(*V, Z)) continue;
-        if (V && prune && cut_off(V->v, Z)) continue;
-        if (MS.tmark[Z] && (!V || allowed(*V, tx, ty))) push_final(root, g + dist(rx, ry, tx, ty));
-        const int off = M.poff[Z], m = M.poff[Z + 1] - off;
-        for (int i = 0; i < m; ++i) {  // the polygon's corners and junctions: in sight
-          const int u = M.pv[off + i];
-          if ((M.vflag[u] || goal_end(u)) && u != roots[root].v &&
-              !(M.vx[u] == rx && M.vy[u] == ry))
-            bend(u, root, rx, ry, g, V);
-        }
-        for (int i = 0; i < m; ++i) {
-          const int zi = M.pv[off + i], zj = M.pv[off + (i + 1) % m];
-          if (orient_d(M.vx[zi], M.vy[zi], M.vx[zj], M.vy[zj], rx, ry) == 0) continue;
-          const int nb = M.pn[off + i];
-          if (nb < 0) continue;
-          // seen from the root: zj left, zi right
-          Lim L{rx, ry, M.vx[zj], M.vy[zj]}, R{rx, ry, M.vx[zi], M.vy[zi]};
-          if (V && V->restr != 0) {
-            const int sa = V->restr * side(V->R, rx, ry, M.vx[zj], M.vy[zj]);
-            const int sb = V->restr * side(V->R, rx, ry, M.vx[zi], M.vy[zi]);
-            if (sa < 0 && sb < 0) continue;
-            if ((sa == 0 && sb < 0) || (sb == 0 && sa < 0)) continue;  // one point
-            if (sa < 0 || sb < 0) {
-              // the restriction's line cuts the edge: its ray into the cone bounds it
-              const Lim& d = V->R;
-              const int inL = cross_sign(rx, ry, M.vx[zj], M.vy[zj], d.x1, d.y1, d.x2, d.y2);
-              const int inR = cross_sign(rx, ry, M.vx[zi], M.vy[zi], d.x1, d.y1, d.x2, d.y2);
-              Lim ray = (inL <= 0 && inR >= 0) ? d : Lim{d.x2, d.y2, d.x1, d.y1};
-              if (sa < 0)
-                L = ray;
-              else
-                R = ray;
-            }
-          }
-          push_interval(root, nb, M.pe[off + i], L, R);
-        }
-      }
-    };
-    std::vector<int>& fan = MS.fan;
-    // the start
-    {
-      int sv = -1;
-      for (int p : MS.spolys) {
-        for (int i = M.poff[p]; i < M.poff[p + 1]; ++i)
-          if (M.vx[M.pv[i]] == sx && M.vy[M.pv[i]] == sy) sv = M.pv[i];
-      }
-      // the start on the network: one of its vertices, or inside a segment
-      const bool at_vertex = MS.satt.size() == 1 && idx(MS.satt[0].first) == sx &&
-                             idy(MS.satt[0].first) == sy;
-      if (at_vertex) sv = MS.satt[0].first;
-      roots.push_back(Root{sx, sy, 0.0, -1, sv});
-      if (sv >= 0) {
-        MS.best[sv] = 0.0;
-        MS.touched.push_back(sv);
-      }
-      expand_point(0, MS.spolys, nullptr);
-      if (sv >= 0) expand_net(0, sv, 0.0);
-      if (!at_vertex)
-        for (const auto& [w, d] : MS.satt) push_vertex(w, 0, d, 0, -1, Lim{});
+  }
+
+  static double dist(double ax, double ay, double bx, double by) {
+    return MeshPlanner::dist(ax, ay, bx, by);
+  }
+  static int side(const Lim& l, double rx, double ry, double x, double y) {
+    return MeshPlanner::side(l, rx, ry, x, y);
+  }
+
+  void push(const Node& N) {
+    nodes.push_back(N);
+    heap.push_back({N.f, (int)nodes.size() - 1});
+    std::push_heap(heap.begin(), heap.end(), std::greater<QE>());
+    ++P.n_pushed;
+  }
+  void push_final(int root, double g) {
+    Node N{};
+    N.f = N.g = g;
+    N.kind = 2;
+    N.root = root;
+    push(N);
+  }
+  bool allowed(const Node& V, double x, double y) const {
+    if (V.restr == 0) return true;
+    return V.restr * side(V.R, M.vx[V.v], M.vy[V.v], x, y) >= 0;
+  }
+  void push_interval(int root, int nb, int k, const Lim& L, const Lim& R) {
+    const int c = P.bsub[M.poff[nb] + k];
+    if (P.prune && c >= 0 && !P.target_side(MS, nb, c)) return;
+    Node N{};
+    N.kind = 0;
+    N.root = root;
+    N.poly = nb;
+    N.k = k;
+    N.L = L;
+    N.R = R;
+    N.g = roots[root].g;
+    N.f = N.g + P.heuristic(N, roots[root], tx, ty);
+    push(N);
+  }
+  void push_vertex(int v, int parent, double g, int restr, int e1, const Lim& line,
+                   int on_net = 0) {
+    if (!(g < MS.best[v])) return;
+    if (MS.best[v] == std::numeric_limits<double>::infinity()) MS.touched.push_back(v);
+    MS.best[v] = g;
+    Node N{};
+    N.kind = 1;
+    N.v = v;
+    N.root = parent;
+    N.g = g;
+    N.f = g + dist(P.idx(v), P.idy(v), tx, ty);
+    N.restr = restr;
+    N.e1 = e1;
+    N.net = on_net || v >= M.nvert();
+    N.R = line;
+    push(N);
+  }
+  // along the zero-width segments from vertex v (the root `root`, reached with g): a
+  // mesh vertex reached this way expands its whole fan; the goal on the network ends
+  void expand_net(int root, int v, double g) {
+    for (const auto& [w, d] : MS.gatt)
+      if (w == v) push_final(root, g + d);
+    if (!P.net.on(v)) return;
+    for (int t = P.net.off[v]; t < P.net.off[v + 1]; ++t) {
+      const int w = P.net.adj[t];
+      push_vertex(w, root, g + dist(P.idx(v), P.idy(v), P.idx(w), P.idy(w)), 0, -1, Lim{});
     }
+  }
+  // a mesh vertex the goal on the network is reached from (an end of its segment or
+  // stub that is no portal: it is one for this query)
+  bool goal_end(int v) const {
+    for (const auto& wd : MS.gatt)
+      if (wd.first == v) return true;
+    return false;
+  }
+  // a path from the root (rx, ry) may bend at vertex v: at a junction every way, at a
+  // corner towards the obstacle there -- the side(s) of the line root-v that the
+  // corner's boundary edges lie on (both when the line runs into the obstacle)
+  // (V: the vertex node whose root this is -- its restriction must allow v; the length
+  // test first, the cheapest to fail: push_vertex would refuse the node the same way)
+  void bend(int v, int root, double rx, double ry, double g, const Node* V) {
+    const double gv = g + dist(rx, ry, M.vx[v], M.vy[v]);
+    if (!(gv < MS.best[v])) return;
+    if (V && !allowed(*V, M.vx[v], M.vy[v])) return;
+    if (M.vflag[v] & JUNCTION) {
+      push_vertex(v, root, gv, 0, -1, Lim{});
+      return;
+    }
+    // a portal where no path bends in the mesh: on along its zero-width segments only
+    const bool portal = (M.vflag[v] & PORTAL) || goal_end(v);
+    if (!(M.vflag[v] & CORNER)) {
+      if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
+      return;
+    }
+    const int p = M.vprev[v], q = M.vnext[v];
+    const int sp = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[p], M.vy[p]);
+    const int sq = orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[q], M.vy[q]);
+    const int restr = (sp >= 0 && sq >= 0) ? 1 : (sp <= 0 && sq <= 0) ? -1 : 0;
+    // the line root-v runs into the obstacle: no shortest path bends here (every way
+    // out of v turns away from the obstacle, and the root sees past v on both sides)
+    if (restr == 0) {
+      if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
+      return;
+    }
+    // the edge of the corner nearest the ray beyond v (a turn of less than 180 degrees
+    // from it towards the obstacle): a shortest path bending at v leaves between that
+    // ray and this edge
+    const int turn = orient_d(M.vx[v], M.vy[v], M.vx[p], M.vy[p], M.vx[q], M.vy[q]);
+    const int e1 = turn == 0 ? -1 : restr * turn > 0 ? p : q;
+    // that edge runs on along the line root-v: the path goes straight on (no bend)
+    if (e1 >= 0 && orient_d(rx, ry, M.vx[v], M.vy[v], M.vx[e1], M.vy[e1]) == 0) {
+      if (portal) push_vertex(v, root, gv, 0, -1, Lim{}, 1);
+      return;
+    }
+    push_vertex(v, root, gv, restr, e1, Lim{rx, ry, M.vx[v], M.vy[v]});
+  }
+  // Is polygon Z (around the corner of vertex node V) wholly beyond the line through
+  // the corner and its edge e1 (strictly, away from the ray beyond the corner)? Z lies
+  // in the cone at the corner between its two neighbours in Z (Z is convex).
+  bool beyond_edge(const Node& V, int Z) const {
+    const int off = M.poff[Z], m = M.poff[Z + 1] - off;
+    const int v = V.v, e = V.e1;
+    int i = 0;
+    while (i < m && M.pv[off + i] != v) ++i;
+    if (i == m) return false;
+    const int za = M.pv[off + (i + 1) % m], zb = M.pv[off + (i + m - 1) % m];
+    const double cx = M.vx[v], cy = M.vy[v], ex = M.vx[e], ey = M.vy[e];
+    return V.restr * orient_d(cx, cy, ex, ey, M.vx[za], M.vy[za]) > 0 &&
+           V.restr * orient_d(cx, cy, ex, ey, M.vx[zb], M.vy[zb]) > 0;
+  }
+  // does a bridge ending at vertex v separate polygon Z from every target polygon?
+  bool cut_off(int v, int Z) const {
+    for (int t = P.vboff[v]; t < P.vboff[v + 1]; ++t)
+      if (!P.target_side(MS, Z, P.vb[t])) return true;
+    return false;
+  }
+  // a root at point (x, y) (vertex v or -1): nodes for the far edges of its polygons
+  void expand_point(int root, const std::vector<int>& fan, const Node* V) {
+    const double rx = roots[root].x, ry = roots[root].y, g = roots[root].g;
+    for (int Z : fan) {
+      if (V && V->e1 >= 0 && beyond_edge(*V, Z)) continue;
+      if (V && P.prune && cut_off(V->v, Z)) continue;
+      if (MS.tmark[Z] && (!V || allowed(*V, tx, ty))) push_final(root, g + dist(rx, ry, tx, ty));
+      const int off = M.poff[Z], m = M.poff[Z + 1] - off;
+      for (int i = 0; i < m; ++i) {  // the polygon's corners and junctions: in sight
+        const int u = M.pv[off + i];
+        if ((M.vflag[u] || goal_end(u)) && u != roots[root].v &&
+            !(M.vx[u] == rx && M.vy[u] == ry))
+          bend(u, root, rx, ry, g, V);
+      }
+      for (int i = 0; i < m; ++i) {
+        const int zi = M.pv[off + i], zj = M.pv[off + (i + 1) % m];
+        if (orient_d(M.vx[zi], M.vy[zi], M.vx[zj], M.vy[zj], rx, ry) == 0) continue;
+        const int nb = M.pn[off + i];
+        if (nb < 0) continue;
+        // seen from the root: zj left, zi right
+        Lim L{rx, ry, M.vx[zj], M.vy[zj]}, R{rx, ry, M.vx[zi], M.vy[zi]};
+        if (V && V->restr != 0 && !restrict_edge(*V, rx, ry, zi, zj, L, R)) continue;
+        push_interval(root, nb, M.pe[off + i], L, R);
+      }
+    }
+  }
+  // The far edge zi -> zj seen from the root (rx, ry) of vertex node V with a
+  // restriction: false when the restriction leaves none (or one point) of it, else its
+  // rays L, R, the one beyond the restriction's line replaced by that line's ray.
+  bool restrict_edge(const Node& V, double rx, double ry, int zi, int zj, Lim& L,
+                     Lim& R) const {
+    const int sa = V.restr * side(V.R, rx, ry, M.vx[zj], M.vy[zj]);
+    const int sb = V.restr * side(V.R, rx, ry, M.vx[zi], M.vy[zi]);
+    if (sa < 0 && sb < 0) return false;
+    if ((sa == 0 && sb < 0) || (sb == 0 && sa < 0)) return false;  // one point
+    if (sa < 0 || sb < 0) {
+      // the restriction's line cuts the edge: its ray into the cone bounds it
+      const Lim& d = V.R;
+      const int inL = cross_sign(rx, ry, M.vx[zj], M.vy[zj], d.x1, d.y1, d.x2, d.y2);
+      const int inR = cross_sign(rx, ry, M.vx[zi], M.vy[zi], d.x1, d.y1, d.x2, d.y2);
+      Lim ray = (inL <= 0 && inR >= 0) ? d : Lim{d.x2, d.y2, d.x1, d.y1};
+      if (sa < 0)
+        L = ray;
+      else
+        R = ray;
+    }
+    return true;
+  }
+  // the start (sx, sy): its root and the nodes it pushes
+  void start(double sx, double sy) {
+    int sv = -1;
+    for (int p : MS.spolys) {
+      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i)
+        if (M.vx[M.pv[i]] == sx && M.vy[M.pv[i]] == sy) sv = M.pv[i];
+    }
+    // the start on the network: one of its vertices, or inside a segment
+    const bool at_vertex = MS.satt.size() == 1 && P.idx(MS.satt[0].first) == sx &&
+                           P.idy(MS.satt[0].first) == sy;
+    if (at_vertex) sv = MS.satt[0].first;
+    roots.push_back(Root{sx, sy, 0.0, -1, sv});
+    if (sv >= 0) {
+      MS.best[sv] = 0.0;
+      MS.touched.push_back(sv);
+    }
+    expand_point(0, MS.spolys, nullptr);
+    if (sv >= 0) expand_net(0, sv, 0.0);
+    if (!at_vertex)
+      for (const auto& [w, d] : MS.satt) push_vertex(w, 0, d, 0, -1, Lim{});
+  }
+  // an interval node N: the cone through its polygon onto the far edges, the target
+  // when in the polygon and the cone, the bends at corners and junctions in the cone
+  void expand_interval(const Node& N) {
+    const Root& r = roots[N.root];
+    if (r.v >= 0 && r.g > MS.best[r.v]) return;  // root-level pruning
+    const double rx = r.x, ry = r.y, g = r.g;
+    const int rid = N.root;
+    const int Pl = N.poly, off = M.poff[Pl], m = M.poff[Pl + 1] - off;
+    // the chain from b (right) around to a (left)
+    int cv[64];
+    int sL[64], sR[64];
+    std::vector<int> cvb, sLb, sRb;
+    int *c = cv, *L = sL, *R = sR;
+    if (m > 64) {
+      cvb.resize(m), sLb.resize(m), sRb.resize(m);
+      c = cvb.data(), L = sLb.data(), R = sRb.data();
+    }
+    for (int j = 0; j < m; ++j) {
+      c[j] = M.pv[off + (N.k + 1 + j) % m];
+      L[j] = side(N.L, rx, ry, M.vx[c[j]], M.vy[c[j]]);
+      R[j] = side(N.R, rx, ry, M.vx[c[j]], M.vy[c[j]]);
+    }
+    if (MS.tmark[Pl] && side(N.L, rx, ry, tx, ty) <= 0 && side(N.R, rx, ry, tx, ty) >= 0)
+      push_final(rid, g + dist(rx, ry, tx, ty));
+    for (int j = 0; j + 1 < m; ++j) {
+      // far edge from c[j] (right) to c[j + 1] (left)
+      if (R[j + 1] < 0 || L[j] > 0) continue;
+      if (R[j + 1] == 0 && R[j] < 0) continue;  // meets the cone at one point
+      if (L[j] == 0 && L[j + 1] > 0) continue;
+      const int ei = (N.k + 1 + j) % m;
+      const int nb = M.pn[off + ei];
+      if (nb < 0) continue;
+      Lim cR = R[j] >= 0 ? Lim{rx, ry, M.vx[c[j]], M.vy[c[j]]} : N.R;
+      Lim cL = L[j + 1] <= 0 ? Lim{rx, ry, M.vx[c[j + 1]], M.vy[c[j + 1]]} : N.L;
+      push_interval(rid, nb, M.pe[off + ei], cL, cR);
+    }
+    // bends: corners at the ends of the interval's edge, junctions in the cone
+    for (int j = 0; j < m; ++j)
+      if ((M.vflag[c[j]] || goal_end(c[j])) && L[j] <= 0 && R[j] >= 0)
+        bend(c[j], rid, rx, ry, g, nullptr);
+  }
+  // the path of final node N: its chain of roots, then the target
+  void path(const Node& N, std::vector<double>& out) const {
+    std::vector<int> chain;
+    for (int r = N.root; r >= 0; r = roots[r].parent) chain.push_back(r);
+    for (int t = (int)chain.size() - 1; t >= 0; --t) {
+      out.push_back(roots[chain[t]].x);
+      out.push_back(roots[chain[t]].y);
+    }
+    if (!(out[out.size() - 2] == tx && out.back() == ty)) {  // the goal is the last root
+      out.push_back(tx);
+      out.push_back(ty);
+    }
+  }
+  // A* over the nodes from the start: PLAN_OK with the path in out, or PLAN_NO_PATH
+  int run(double sx, double sy, std::vector<double>& out) {
+    start(sx, sy);
+    std::vector<int>& fan = MS.fan;
     while (!heap.empty()) {
       const int id = heap.front().second;
       std::pop_heap(heap.begin(), heap.end(), std::greater<QE>());
       heap.pop_back();
       const Node N = nodes[id];
       if (N.kind == 2) {
-        std::vector<int> chain;
-        for (int r = N.root; r >= 0; r = roots[r].parent) chain.push_back(r);
-        for (int t = (int)chain.size() - 1; t >= 0; --t) {
-          out.push_back(roots[chain[t]].x);
-          out.push_back(roots[chain[t]].y);
-        }
-        if (!(out[out.size() - 2] == tx && out.back() == ty)) {  // the goal is the last root
-          out.push_back(tx);
-          out.push_back(ty);
-        }
+        path(N, out);
         return PLAN_OK;
       }
-      ++n_expanded;
+      ++P.n_expanded;
       if (N.kind == 1) {
         if (N.g > MS.best[N.v]) continue;
-        roots.push_back(Root{idx(N.v), idy(N.v), N.g, N.root, N.v});
+        roots.push_back(Root{P.idx(N.v), P.idy(N.v), N.g, N.root, N.v});
         const int root = (int)roots.size() - 1;
         if (!N.net) {
           fan.assign(M.vp.begin() + M.vpoff[N.v], M.vp.begin() + M.vpoff[N.v + 1]);
@@ -1023,46 +669,61 @@ struct MeshPlanner {
         expand_net(root, N.v, N.g);
         continue;
       }
-      const Root& r = roots[N.root];
-      if (r.v >= 0 && r.g > MS.best[r.v]) continue;  // root-level pruning
-      const double rx = r.x, ry = r.y, g = r.g;
-      const int rid = N.root;
-      const int P = N.poly, off = M.poff[P], m = M.poff[P + 1] - off;
-      // the chain from b (right) around to a (left)
-      int cv[64];
-      int sL[64], sR[64];
-      std::vector<int> cvb, sLb, sRb;
-      int *c = cv, *L = sL, *R = sR;
-      if (m > 64) {
-        cvb.resize(m), sLb.resize(m), sRb.resize(m);
-        c = cvb.data(), L = sLb.data(), R = sRb.data();
-      }
-      for (int j = 0; j < m; ++j) {
-        c[j] = M.pv[off + (N.k + 1 + j) % m];
-        L[j] = side(N.L, rx, ry, M.vx[c[j]], M.vy[c[j]]);
-        R[j] = side(N.R, rx, ry, M.vx[c[j]], M.vy[c[j]]);
-      }
-      if (MS.tmark[P] && side(N.L, rx, ry, tx, ty) <= 0 && side(N.R, rx, ry, tx, ty) >= 0)
-        push_final(rid, g + dist(rx, ry, tx, ty));
-      for (int j = 0; j + 1 < m; ++j) {
-        // far edge from c[j] (right) to c[j + 1] (left)
-        if (R[j + 1] < 0 || L[j] > 0) continue;
-        if (R[j + 1] == 0 && R[j] < 0) continue;  // meets the cone at one point
-        if (L[j] == 0 && L[j + 1] > 0) continue;
-        const int ei = (N.k + 1 + j) % m;
-        const int nb = M.pn[off + ei];
-        if (nb < 0) continue;
-        Lim cR = R[j] >= 0 ? Lim{rx, ry, M.vx[c[j]], M.vy[c[j]]} : N.R;
-        Lim cL = L[j + 1] <= 0 ? Lim{rx, ry, M.vx[c[j + 1]], M.vy[c[j + 1]]} : N.L;
-        push_interval(rid, nb, M.pe[off + ei], cL, cR);
-      }
-      // bends: corners at the ends of the interval's edge, junctions in the cone
-      for (int j = 0; j < m; ++j)
-        if ((M.vflag[c[j]] || goal_end(c[j])) && L[j] <= 0 && R[j] >= 0)
-          bend(c[j], rid, rx, ry, g, nullptr);
+      expand_interval(N);
     }
     return PLAN_NO_PATH;
   }
 };
+
+inline int MeshPlanner::search(double sx, double sy, double tx, double ty,
+                               std::vector<double>& out, MeshScratch& MS) const {
+  return MeshSearch(*this, MS, tx, ty).run(sx, sy, out);
+}
+
+// ------------------------------------------------------------------------------------
+// what the bindings run (planning_queries.hpp has the visibility graph's)
+
+// The mesh planner's queries, one scratch for all.
+inline void query_many(const MeshPlanner& mp, const double* s, const double* g,
+                       std::size_t n, PlanAnswers<double>& A) {
+  PlanScratch S;
+  S.init((std::size_t)mp.base.items());
+  MeshScratch MS;
+  MS.init(mp.nids(), mp.M.npoly());
+  query_loop(s, g, n, [&](double sx, double sy, double gx, double gy, std::vector<double>& out,
+                          int& grp) { return mp.query(sx, sy, gx, gy, out, grp, S, MS); }, A);
+}
+
+// One query of the mesh planner.
+inline int query_one(const MeshPlanner& mp, double sx, double sy, double gx, double gy,
+                     std::vector<double>& out, int& grp) {
+  PlanScratch S;
+  S.init((std::size_t)mp.base.items());
+  // kept per thread between calls (query() sizes it to the mesh; every query leaves it
+  // cleared)
+  thread_local MeshScratch MS;
+  return mp.query(sx, sy, gx, gy, out, grp, S, MS);
+}
+
+// The mesh as arrays: vertices (2 per vertex), polygon offsets, polygon vertex ids, flags.
+inline void mesh_arrays(const NavMesh& M, std::vector<double>& xy, std::vector<i64>& off,
+                        std::vector<i64>& pv, std::vector<i64>& fl) {
+  xy.resize(2 * M.vx.size());
+  for (std::size_t i = 0; i < M.vx.size(); ++i) {
+    xy[2 * i] = M.vx[i];
+    xy[2 * i + 1] = M.vy[i];
+  }
+  off.assign(M.poff.begin(), M.poff.end());
+  pv.assign(M.pv.begin(), M.pv.end());
+  fl.assign(M.vflag.begin(), M.vflag.end());
+}
+
+// The zero-width segments of the mesh planner's network, (ax, ay, bx, by) each.
+inline void network_segments(const MeshPlanner& mp, std::vector<double>& seg) {
+  seg.clear();
+  for (std::size_t k = 0; k < mp.net.ea.size(); ++k)
+    seg.insert(seg.end(), {mp.idx(mp.net.ea[k]), mp.idy(mp.net.ea[k]), mp.idx(mp.net.eb[k]),
+                           mp.idy(mp.net.eb[k])});
+}
 
 }  // namespace mk

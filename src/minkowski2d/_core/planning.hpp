@@ -27,12 +27,13 @@
 #include <cstdint>
 #include <limits>
 #include <queue>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "convex.hpp"
 #include "exact.hpp"
+#include "filter.hpp"
+#include "parallel.hpp"
 
 namespace mk {
 
@@ -50,6 +51,13 @@ enum PlanStatus : int {
   PLAN_NO_PATH = 3,       // the goal cannot be reached
   PLAN_OUTSIDE_MESH = 4,  // (navmesh) a point outside the meshed box: mesh a larger one
 };
+
+// The slack of the uniform grids' cell lookups (the planner's below and the navigation
+// mesh's): points and boxes find their cells in floating point (with int64 -> double
+// conversion and, in Planner::blocked, interpolation along a segment), with an error far
+// below this slack; every cell within it of the computed position is visited too. big:
+// the largest |coordinate| of the grid's boxes, ext: their extent.
+inline double grid_slack(double big, double ext) { return (big + ext) * 0x1p-36; }
 
 // Per-thread scratch: stamps deduplicate items met in several grid cells.
 struct PlanScratch {
@@ -191,8 +199,6 @@ struct Planner {
     // walk along the major axis u; the minor axis w varies by at most one unit per unit
     const double pu = alongx ? dpx : dpy, pw = alongx ? dpy : dpx;
     const double qu = alongx ? dqx : dqy, qw = alongx ? dqy : dqx;
-    const double u0 = alongx ? gx0 : gy0, w0 = alongx ? gy0 : gx0;
-    const i64 nu = alongx ? nx : ny, nw = alongx ? ny : nx;
     auto cu = [&](double u) { return alongx ? cellx(u) : celly(u); };
     auto cw = [&](double w) { return alongx ? celly(w) : cellx(w); };
     const double umin = std::min(pu, qu), umax = std::max(pu, qu);
@@ -200,10 +206,6 @@ struct Planner {
     const double slope = (qw - pw) / (qu - pu);
     i64 c0 = cu(umin - slack), c1 = cu(umax + slack);
     const int du = qu >= pu ? 1 : -1, dw = qw >= pw ? 1 : -1;
-    (void)nu;
-    (void)nw;
-    (void)u0;
-    (void)w0;
     for (i64 t = 0; t <= c1 - c0; ++t) {
       i64 c = du > 0 ? c0 + t : c1 - t;
       double ua = (alongx ? gx0 : gy0) + (double)c * cs, ub = ua + cs;
@@ -266,13 +268,11 @@ struct Planner {
   // The group whose union has x in its open interior, or -1.
   int interior_group(T x, T y, PlanScratch& S) const {
     if (cell_off.empty()) return -1;
-    i64 c = celly((double)y) * nx + cellx((double)x);
     std::vector<Cone> cones;
     const T* v = pc.data();
     // a point within `slack` of a cell border may belong to the neighbour's items too
     i64 cxa = cellx((double)x - slack), cxb = cellx((double)x + slack);
     i64 cya = celly((double)y - slack), cyb = celly((double)y + slack);
-    (void)c;
     const std::uint32_t tk = S.next();
     // several obstacles may overlap at x: the answer is the lowest group whose C-obstacle
     // has x in its open interior (the same whatever the order of the grid's cells)
@@ -437,8 +437,8 @@ struct Planner {
     }
     double ext = std::max(X1 - X0, Y1 - Y0);
     if (!(ext > 0) || !std::isfinite(ext)) ext = std::max(1.0, big);
-    // slack covers the rounding of int64 -> double and of the walk's interpolation
-    slack = (big + ext) * 0x1p-36 + 0x1p-1000;
+    // (and at least 2^-1000: a grid of tiny coordinates keeps a normal slack)
+    slack = grid_slack(big, ext) + 0x1p-1000;
     double per = P > 0 ? area / (double)P : ext * ext;
     // about one piece per cell, at most ~4 cells per item (and 4096 per side)
     cs = std::sqrt(std::max(per, ext * ext / (4.0 * (double)I + 64.0)));
@@ -511,11 +511,9 @@ struct Planner {
                 continue;
               int ax = v[2 * i] != v[2 * i2] ? 0 : 1;
               // overlap along axis ax: the larger of the lower ends, the smaller upper end
-              i64 cand[4] = {i, i2, j, j2};
               auto key = [&](i64 t) { return v[2 * t + ax]; };
               i64 loA = key(i) < key(i2) ? i : i2, hiA = loA == i ? i2 : i;
               i64 loB = key(j) < key(j2) ? j : j2, hiB = loB == j ? j2 : j;
-              (void)cand;
               i64 lo = key(loA) >= key(loB) ? loA : loB;
               i64 hi = key(hiA) <= key(hiB) ? hiA : hiB;
               if (!(key(lo) < key(hi))) continue;
@@ -610,18 +608,13 @@ struct Planner {
     std::uint8_t* __restrict sk = skip.data();
     for (i64 j = i + 1; j < N; ++j) {
       const double ax = X[j], ay = Y[j];
+      // the two corner points certainly on opposite sides of the line a v (filter.hpp)
       // at i: orient(a, v, u) and orient(a, v, w)
-      double l1 = (vx - ax) * (uy - ay), r1 = (vy - ay) * (ux - ax), d1 = l1 - r1;
-      double b1 = ERRBOUND * (std::fabs(l1) + std::fabs(r1));
-      double l2 = (vx - ax) * (wy - ay), r2 = (vy - ay) * (wx - ax), d2 = l2 - r2;
-      double b2 = ERRBOUND * (std::fabs(l2) + std::fabs(r2));
-      const bool sep_i = ((d1 > b1) & (-d2 > b2)) | ((-d1 > b1) & (d2 > b2));
+      const bool sep_i = filter_apart((vx - ax) * (uy - ay), (vy - ay) * (ux - ax),
+                                      (vx - ax) * (wy - ay), (vy - ay) * (wx - ax));
       // at j: orient(v, a, U) and orient(v, a, W)
-      double l3 = (ax - vx) * (UY[j] - vy), r3 = (ay - vy) * (UX[j] - vx), d3 = l3 - r3;
-      double b3 = ERRBOUND * (std::fabs(l3) + std::fabs(r3));
-      double l4 = (ax - vx) * (WY[j] - vy), r4 = (ay - vy) * (WX[j] - vx), d4 = l4 - r4;
-      double b4 = ERRBOUND * (std::fabs(l4) + std::fabs(r4));
-      const bool sep_j = ((d3 > b3) & (-d4 > b4)) | ((-d3 > b3) & (d4 > b4));
+      const bool sep_j = filter_apart((ax - vx) * (UY[j] - vy), (ay - vy) * (UX[j] - vx),
+                                      (ax - vx) * (WY[j] - vy), (ay - vy) * (WX[j] - vx));
       sk[j] = (std::uint8_t)(sep_i | sep_j);
     }
   }
@@ -667,20 +660,17 @@ struct Planner {
     const i64 N = ncand();
     build_filter();
     std::vector<std::pair<int, int>> edges;
-    const int nt = std::max(1, std::min<int>(threads, (int)(N / 256) + 1));
+    const int nt = thread_count(threads, N / 256 + 1);
     if (nt == 1) {
       pairs_of(0, 1, S, edges);
     } else {
       std::vector<std::vector<std::pair<int, int>>> part(nt);
-      std::vector<std::thread> pool;
-      for (int t = 1; t < nt; ++t)
-        pool.emplace_back([&, t]() {
-          PlanScratch St;
-          St.init((std::size_t)items());
-          pairs_of(t, nt, St, part[t]);
-        });
-      pairs_of(0, nt, S, part[0]);
-      for (auto& th : pool) th.join();
+      parallel_threads(nt, [&](int t) {
+        if (t == 0) return pairs_of(0, nt, S, part[0]);
+        PlanScratch St;
+        St.init((std::size_t)items());
+        pairs_of(t, nt, St, part[t]);
+      });
       for (auto& p : part) edges.insert(edges.end(), p.begin(), p.end());
     }
     aoff.assign(N + 1, 0);
