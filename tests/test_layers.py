@@ -129,11 +129,7 @@ def test_no_code_table_outside_the_core():
             vints = [_is_int(v) for v in node.values]
             if (all(strs) and all(vints)) or (all(ints) and all(vstrs)):
                 bad.append(f"{name}:{node.lineno}")
-    assert set(bad) <= TRACE_SOURCES_NOT_YET, bad
-
-
-#: the merge trace's source codes (-1, 0, 1) are not yet exported by the core
-TRACE_SOURCES_NOT_YET = {"trace.py:351"}
+    assert not bad, bad
 
 
 #: each fault's message, written once: the words and the one module that writes them
@@ -172,20 +168,8 @@ def test_modules_and_functions_are_small():
 
 
 CORE = PKG / "_core"
-#: Core files not yet moved onto the size rule: another branch of the same round splits
-#: them (collision, navigation mesh and network, planning, the module's bindings); the
-#: merge of both empties this set.
-CPP_NOT_YET: set[str] = {
-    "bind.hpp",
-    "collision.cpp",
-    "collision.hpp",
-    "module.cpp",
-    "navmesh.cpp",
-    "navmesh.hpp",
-    "navnet.hpp",
-    "planning.cpp",
-    "planning.hpp",
-}
+#: Core files not yet moved onto the size rule (none: every file of _core keeps it)
+CPP_NOT_YET: set[str] = set()
 
 
 def _cpp_blank(text: str) -> str:

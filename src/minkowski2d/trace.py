@@ -348,7 +348,7 @@ def _log_line(s: MergeStep) -> str:
     return f"{s.index}. take {names} ({how}) → {format_point(s.vertex)}"
 
 
-_SOURCE = {-1: "A", 1: "B", 0: "AB"}
+_SOURCE = {code: name for name, code in core.TRACE_SOURCES.items()}
 
 
 def _run(a: ArrayLike2, b: ArrayLike2, hull: bool) -> tuple[list, int, list, int, list, list, Any]:
@@ -379,7 +379,12 @@ def _run(a: ArrayLike2, b: ArrayLike2, hull: bool) -> tuple[list, int, list, int
     qb = [tuple(r) for r in B[ib].tolist()]
     out = [tuple(r) for r in res.tolist()]
     record = [
-        (_SOURCE[src], None if i < 0 else i, None if j < 0 else j, None if c == 2 else c)
+        (
+            _SOURCE[src],
+            None if i < 0 else i,
+            None if j < 0 else j,
+            None if c == core.TRACE_NO_CROSS else c,
+        )
         for src, i, j, c in steps.tolist()
     ]
     return qa, int(sa), qb, int(sb), out, record, res

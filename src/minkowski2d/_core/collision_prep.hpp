@@ -21,7 +21,7 @@ constexpr i64 AUTO_SUM_MAX = 64;  // vertex total up to which the walk beats GJK
 constexpr int NCOL = 7;           // result row: value, normal (2), point_a (2), point_b (2)
 
 constexpr double I_LIM = (double)FLOAT_EXACT_INT;  // ints convert to double exactly
-// Every 2-term sign here is exact.hpp's cross_sign, or its filter alone (filter.hpp) with
+// Every 2-term sign here is exact.hpp's cross_sign, or its filter alone (filter_sign) with
 // cross_sign where that cannot tell. Two rules of this file differ from that filter, for
 // a reason:
 //  * REL (cross_value): a *value* is wanted, not a sign, so the float cross product is

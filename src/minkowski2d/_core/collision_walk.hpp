@@ -11,7 +11,6 @@
 
 #include "collision_prep.hpp"
 #include "exact.hpp"
-#include "filter.hpp"
 
 namespace mk {
 namespace coll {
@@ -137,10 +136,11 @@ inline bool walk_take_a(const Scratch& S, i64 i, i64 t, i64 sa, i64 sbm, i64 ea,
   double ax0 = AX[i], ay0 = AY[i], ax1 = AX[i + 1], ay1 = AY[i + 1];
   double bx0 = BX[t], by0 = BY[t], bx1 = BX[t + 1], by1 = BY[t + 1];
   // cross(a1 - a0, b0 - b1): > 0 when -B's edge is CCW of A's (A first)
-  FilterSign f = filter_sign((ax1 - ax0) * (by0 - by1), (ay1 - ay0) * (bx0 - bx1));
+  // exact.hpp's filter: +1 / -1 when certified, 0 when it cannot tell
+  int f = filter_sign((ax1 - ax0) * (by0 - by1), (ay1 - ay0) * (bx0 - bx1));
   bool ha = i >= sa, hb = t >= sbm, same = ha == hb;
-  bool ta = same ? f.sign > 0 : !ha;
-  if (__builtin_expect(same & !f.certain & (i < ea) & (t < eb), 0))
+  bool ta = same ? f > 0 : !ha;
+  if (__builtin_expect(same & (f == 0) & (i < ea) & (t < eb), 0))
     ta = cross_sign(ax0, ay0, ax1, ay1, bx1, by1, bx0, by0) >= 0;
   return (ta | (t >= eb)) & (i < ea);
 }
@@ -176,10 +176,8 @@ inline int intersects(const Poly& A, const Poly& B, Scratch& S) {
   for (i64 s = 0; s < ea + eb; ++s) {
     bool ta = walk_take_a(S, i, t, sa, sbm, ea, eb);
     Sub e = pick(S, ta, i, t);
-    FilterSign f =
-        filter_sign((e.p1x - e.p0x) * (e.qy - e.p0y), (e.p1y - e.p0y) * (e.qx - e.p0x));
-    int o = f.sign;
-    if (__builtin_expect(!f.certain, 0))
+    int o = filter_sign((e.p1x - e.p0x) * (e.qy - e.p0y), (e.p1y - e.p0y) * (e.qx - e.p0x));
+    if (__builtin_expect(o == 0, 0))
       o = cross_sign(e.p0x, e.p0y, e.p1x, e.p1y, e.p0x, e.p0y, e.qx, e.qy);
     if (o < 0) return 0;
     zero &= o == 0;

@@ -298,8 +298,11 @@ inline Norm normalize(const T* p, i64 lo, i64 hi, i64* keep, std::int8_t* turn, 
 // Called once per merge step when recording (the animation's trace): source -1 = A,
 // +1 = B, 0 = both; i, j the edge indices compared (-1 once a list is exhausted); c the
 // cross-product sign that decided, or 2 when the half-planes or exhaustion decided.
+enum StepSource : int { FROM_A = -1, FROM_BOTH = 0, FROM_B = 1 };
+constexpr std::int8_t NO_CROSS = 2;  // Step::cross when no cross product decided
+
 struct Step {
-  std::int8_t source;
+  std::int8_t source;  // a StepSource
   i64 i, j;
   std::int8_t cross;
 };
@@ -322,7 +325,7 @@ inline i64 merge_ids(const T* pa, const Norm& A, const T* pb, const Norm& B, Emi
     ++k;
     if (i >= ea && j >= eb) break;
     int step;
-    std::int8_t c = 2;
+    std::int8_t c = NO_CROSS;
     if (i < ea && j < eb) {
       bool ha = i >= sa, hb = j >= sb;
       if (ha != hb) {

@@ -306,6 +306,18 @@ template <class C>
   return pos - neg;
 }
 
+// Whether l1 - r1 and l2 - r2 certainly have opposite signs, for a vectorized pre-test
+// that only skips work on a certain answer (planning.hpp's tangent pre-filter). The same
+// bound without the MINBOUND test, which is vacuous under its precondition: every
+// coordinate 0 or in [2^-400, 2^400], or an int of at most 2^53 (so a nonzero product of
+// differences is at least 2^-904 and none underflows; NaN certifies nothing). Measured:
+// the test costs the visibility graph's build about 5%, for no change in any result.
+[[gnu::always_inline]] inline bool filter_apart(double l1, double r1, double l2, double r2) {
+  const double d1 = l1 - r1, b1 = ERRBOUND * (std::fabs(l1) + std::fabs(r1));
+  const double d2 = l2 - r2, b2 = ERRBOUND * (std::fabs(l2) + std::fabs(r2));
+  return ((d1 > b1) & (-d2 > b2)) | ((-d1 > b1) & (d2 > b2));
+}
+
 // Exact sign of (a1 - a0) x (b1 - b0) for finite doubles: filter_sign, then
 // cross_sign_slow when it cannot tell.
 [[gnu::always_inline]] inline int cross_sign(double a0x, double a0y, double a1x, double a1y,

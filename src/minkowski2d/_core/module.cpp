@@ -213,6 +213,12 @@ void bind_boolean(nb::module_& m);    // boolean.cpp
 NB_MODULE(_ext, m) {
   using namespace mk_bind;
   m.doc() = "minkowski2d's compiled exact core (private; use the public modules).";
+  nb::dict sources;  // the merge trace's step sources (convex.hpp StepSource)
+  sources["A"] = (int)mk::FROM_A;
+  sources["B"] = (int)mk::FROM_B;
+  sources["AB"] = (int)mk::FROM_BOTH;
+  m.attr("TRACE_SOURCES") = sources;
+  m.attr("TRACE_NO_CROSS") = (int)mk::NO_CROSS;
   m.attr("OK") = (int)mk::OK;
   m.attr("TURNS_BOTH_WAYS") = (int)mk::TURNS_BOTH_WAYS;
   m.attr("SPIKE") = (int)mk::SPIKE;

@@ -32,7 +32,6 @@
 
 #include "convex.hpp"
 #include "exact.hpp"
-#include "filter.hpp"
 #include "parallel.hpp"
 
 namespace mk {
@@ -608,7 +607,7 @@ struct Planner {
     std::uint8_t* __restrict sk = skip.data();
     for (i64 j = i + 1; j < N; ++j) {
       const double ax = X[j], ay = Y[j];
-      // the two corner points certainly on opposite sides of the line a v (filter.hpp)
+      // the two corner points certainly on opposite sides of the line a v (exact.hpp's filter_apart)
       // at i: orient(a, v, u) and orient(a, v, w)
       const bool sep_i = filter_apart((vx - ax) * (uy - ay), (vy - ay) * (ux - ax),
                                       (vx - ax) * (wy - ay), (vy - ay) * (wx - ax));

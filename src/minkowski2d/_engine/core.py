@@ -152,6 +152,10 @@ else:
     #: Why a polygon is invalid (``Status.INVALID_POLYGON``); defined once, in exact.hpp.
     Invalid = enum.IntEnum("Invalid", dict(_ext.INVALID_REASONS))
 
+#: The merge trace's step sources, name -> code, and "no cross product decided"
+#: (convex.hpp StepSource, NO_CROSS).
+TRACE_SOURCES: dict[str, int] = dict(_ext.TRACE_SOURCES)
+TRACE_NO_CROSS: int = _ext.TRACE_NO_CROSS
 #: The collision walk's queries (collision.hpp).
 COLL_INTERSECTS: int = _ext.COLL_INTERSECTS
 COLL_DISTANCE: int = _ext.COLL_DISTANCE
