@@ -354,6 +354,7 @@ def _batch(As: Any, Bs: Any, mode: int, threads: int = 1) -> tuple[np.ndarray, n
     hit = np.zeros(P, np.int8)
     res = np.zeros((P if mode in (_DISTANCE, _PENETRATION) else 1, 7))
     need = mode == _PENETRATION
+    prepared: list[tuple] | None  # None: the exact path
     prepared = []
     for R, nm, many in ((RA, names[0], many_a), (RB, names[1], many_b)):
         p = _kernel_view(R.coords)

@@ -236,7 +236,7 @@ def problem_error(
     status, reason, ring, vertex = int(status), int(reason), int(ring), int(vertex)
     detail = None
     if status == Status.INVALID_POLYGON:
-        detail = _TEXT.get(Invalid(reason), f"reason {reason}")  # type: ignore[call-overload]
+        detail = _TEXT.get(Invalid(reason), f"reason {reason}")
     return status_error(
         status,
         vertex,

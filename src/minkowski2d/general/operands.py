@@ -204,9 +204,10 @@ def _checked(rings: Any, name: str, multi: bool) -> _Operand:
 
 def _build(raw: _Raw) -> _Operand:
     """Validate a parsed operand exactly (the core's checks; no GEOS)."""
-    from .._engine.polygon import rings_of, rings_of_array
+    from .._engine.polygon import Rings, rings_of, rings_of_array
 
     name = raw.name
+    rings: list[np.ndarray] | Rings
     if raw.kind == "items":
         rings = []
         for item in raw.value:

@@ -68,11 +68,15 @@ def _arrays(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return xy, ro, po
 
 
-def _validated(xy, ring_off, poly_off, name: str, unite: bool) -> _Input:
+def _validated(
+    xy: np.ndarray, ring_off: np.ndarray, poly_off: np.ndarray, name: str, unite: bool
+) -> _Input:
     """Rings checked exactly by the core (the check of ``_polygon.check``: simple rings,
     holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
     by the core before offsetting (``unite``; for a MultiPolygon, found by the same
     check)."""
+    # status, reason, ring, vertex, orientation, disconnected
+    verdict: tuple[int, int, int, int, np.ndarray, np.ndarray]
     verdict = core.check_polygons_f(xy, ring_off, poly_off, False)
     if verdict[0]:
         from .._engine.polygon import Rings, problem_error
@@ -141,6 +145,7 @@ def _read(obj: Any, name: str) -> _Input:
             obj = shapely.get_coordinates(obj)
         else:
             return _shapely_input(obj, name)
+    data: np.ndarray | list | None
     data, _kind = as_array(obj, name)
     delta = 0.0
     if isinstance(data, list):  # Fractions or huge ints: rounded to float64 once
@@ -302,7 +307,7 @@ def _shapes(res: tuple, distance: Any, tolerance: Any) -> list:
         if len(po) > 1
         else np.empty(0, object)
     )
-    out = []
+    out: list[shapely.Geometry] = []
     for g in range(len(go) - 1):
         k0, k1 = int(go[g]), int(go[g + 1])
         if k1 == k0:
