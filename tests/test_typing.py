@@ -4,6 +4,7 @@ pass. The samples are in tests/typing/; lines that must fail carry ``# E:``."""
 
 from __future__ import annotations
 
+import importlib.metadata
 import os
 import re
 import subprocess
@@ -47,3 +48,21 @@ def test_public_api_type_checks(tmp_path):
     assert set(errors) == marked, out
     assert any("hull" in e and '"bool"' in e for e in errors[("sample_bad", 8)])
     assert rc == 1
+
+
+def test_the_package_passes_mypy(tmp_path):
+    """The package itself type-checks with the project's configuration ([tool.mypy] in
+    pyproject.toml: the untyped modules it names, the stubs of the test extra)."""
+    pytest.importorskip("mypy", reason="mypy is not installed (pip install -e '.[test]')")
+    root = HERE.parents[1]
+    if not (root / "pyproject.toml").is_file() or not (root / "src" / "minkowski2d").is_dir():
+        pytest.skip("needs the repository (pyproject.toml and src/minkowski2d)")
+    for stubs in ("types-shapely", "types-tqdm"):
+        try:
+            importlib.metadata.version(stubs)
+        except importlib.metadata.PackageNotFoundError:
+            pytest.skip(f"{stubs} is not installed (pip install -e '.[test]')")
+    cmd = [sys.executable, "-m", "mypy", "--config-file", "pyproject.toml"]
+    cmd += ["--cache-dir", str(tmp_path / "cache"), "--no-color-output", "src/minkowski2d"]
+    p = subprocess.run(cmd, capture_output=True, text=True, cwd=root, timeout=600)
+    assert p.returncode == 0, p.stdout + p.stderr
