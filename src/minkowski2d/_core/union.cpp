@@ -33,35 +33,6 @@ nb::tuple result(const mk::ov::Rings& r, const mk::un::UnionStats& s, i64 bad_po
                         nb::make_tuple(bad_poly, bad_vertex));
 }
 
-// A ring that is not convex, counter-clockwise at its lowest vertex (exact turn), with
-// repeated points dropped; empty when it has no such vertex (no area).
-std::vector<mk::ov::P> general_ring(const double* xy, i64 lo, i64 hi) {
-  std::vector<std::pair<double, double>> r;
-  for (i64 i = lo; i < hi; ++i) {
-    std::pair<double, double> p{xy[2 * i], xy[2 * i + 1]};
-    if (r.empty() || r.back() != p) r.push_back(p);
-  }
-  while (r.size() > 1 && r.front() == r.back()) r.pop_back();
-  std::vector<mk::ov::P> out;
-  while (r.size() >= 3) {
-    const std::size_t n = r.size();
-    std::size_t b = 0;
-    for (std::size_t i = 1; i < n; ++i)
-      if (r[i] < r[b]) b = i;
-    const auto &p = r[(b + n - 1) % n], &c = r[b], &q = r[(b + 1) % n];
-    int o = mk::cross_sign(p.first, p.second, c.first, c.second, c.first, c.second, q.first,
-                           q.second);
-    if (o == 0) {  // the lowest vertex is a spike or straight on: drop it
-      r.erase(r.begin() + (std::ptrdiff_t)b);
-      continue;
-    }
-    if (o < 0) std::reverse(r.begin(), r.end());
-    for (auto& v : r) out.push_back(mk::ov::P{mk::ov::dd(v.first), mk::ov::dd(v.second)});
-    break;
-  }
-  return out;
-}
-
 // union_convex(xy (N, 2) float64, offsets (P + 1,), max_crossings, max_pairs, cull=True) -> (xy,
 // ring_off, poly_off, status, (pieces, culled, kept, rounds, runs, pairs, crossings),
 // (polygon, vertex)): the exact union (winding number >= 1) of polygons given as rings,
@@ -86,48 +57,8 @@ nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 max_crossings, i64 max_
   i64 bad_poly = -1, bad_vertex = -1;
   {
     nb::gil_scoped_release nogil;
-    i64 big = 1;
-    for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
-    std::vector<i64> keep(big), idx(big);
-    std::vector<std::int8_t> turn(big);
-    std::vector<mk::ov::P> pts;
-    std::vector<i64> po{0};
-    std::vector<char> convex;
-    pts.reserve(n);
-    for (i64 k = 0; k < np && out.status == mk::OK; ++k) {
-      mk::Norm N = mk::normalize(xy, off[k], off[k + 1], keep.data(), turn.data(), idx.data());
-      if (N.code == mk::NONFINITE || N.code == mk::RANGE) {
-        out.status = N.code;
-        bad_poly = k;
-        bad_vertex = N.vertex;
-        break;
-      }
-      if (N.code == mk::OK) {
-        if (N.k < 3) continue;  // a point or a segment: no area
-        for (i64 t = 0; t < N.k; ++t) {
-          i64 i = N.at(t);
-          pts.push_back(mk::ov::P{mk::ov::dd(xy[2 * i]), mk::ov::dd(xy[2 * i + 1])});
-        }
-        convex.push_back(1);
-      } else {
-        std::vector<mk::ov::P> r = general_ring(xy, off[k], off[k + 1]);
-        if (r.empty()) continue;
-        pts.insert(pts.end(), r.begin(), r.end());
-        convex.push_back(0);
-      }
-      po.push_back((i64)pts.size());
-    }
-    if (out.status == mk::OK) {
-      mk::un::PointSource src{&pts, &po, &convex};
-      mk::un::with_workspace([&](mk::un::Workspace& w) {
-        w.u.cull = cull;
-        w.u.max_crossings = max_crossings;
-        w.u.max_pairs = max_pairs;
-        w.u.unite(src, out);
-        st = w.u.st;
-        return 0;
-      });
-    }
+    mk::un::union_rings(xy, off, np, cull, max_crossings, max_pairs, out, st, bad_poly,
+                        bad_vertex);
   }
   return result(out, st, bad_poly, bad_vertex);
 }

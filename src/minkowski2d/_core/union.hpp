@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <memory>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #include "convex.hpp"
@@ -526,6 +527,88 @@ inline int sum_pieces_union(const double* pa, const i64* oa, i64 na, const doubl
     st = w.u.st;
     return code;
   });
+}
+
+// A ring that is not convex, counter-clockwise at its lowest vertex (exact turn), with
+// repeated points dropped; empty when it has no such vertex (no area).
+inline std::vector<ov::P> general_ring(const double* xy, i64 lo, i64 hi) {
+  std::vector<std::pair<double, double>> r;
+  for (i64 i = lo; i < hi; ++i) {
+    std::pair<double, double> p{xy[2 * i], xy[2 * i + 1]};
+    if (r.empty() || r.back() != p) r.push_back(p);
+  }
+  while (r.size() > 1 && r.front() == r.back()) r.pop_back();
+  std::vector<ov::P> out;
+  while (r.size() >= 3) {
+    const std::size_t n = r.size();
+    std::size_t b = 0;
+    for (std::size_t i = 1; i < n; ++i)
+      if (r[i] < r[b]) b = i;
+    const auto &p = r[(b + n - 1) % n], &c = r[b], &q = r[(b + 1) % n];
+    int o = cross_sign(p.first, p.second, c.first, c.second, c.first, c.second, q.first,
+                       q.second);
+    if (o == 0) {  // the lowest vertex is a spike or straight on: drop it
+      r.erase(r.begin() + (std::ptrdiff_t)b);
+      continue;
+    }
+    if (o < 0) std::reverse(r.begin(), r.end());
+    for (auto& v : r) out.push_back(ov::P{ov::dd(v.first), ov::dd(v.second)});
+    break;
+  }
+  return out;
+}
+
+// The exact union (winding number >= 1) of rings meant to be convex (union_convex's
+// binding): each normalized exactly (repeated and collinear vertices dropped; a point or a
+// segment has no area and is skipped) and culled when inside the union so far; a ring that
+// is not convex (a rounded convex sum can turn both ways by an ulp) is still united,
+// counter-clockwise by its turn at the lowest vertex (general_ring), never culled. A
+// non-finite coordinate or one out of range gives that status and (bad_poly, bad_vertex).
+inline void union_rings(const double* xy, const i64* off, i64 np, bool cull, i64 max_crossings,
+                        i64 max_pairs, ov::Rings& out, UnionStats& st, i64& bad_poly,
+                        i64& bad_vertex) {
+  i64 big = 1;
+  for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
+  std::vector<i64> keep(big), idx(big);
+  std::vector<std::int8_t> turn(big);
+  std::vector<ov::P> pts;
+  std::vector<i64> po{0};
+  std::vector<char> convex;
+  pts.reserve((std::size_t)off[np]);
+  for (i64 k = 0; k < np && out.status == OK; ++k) {
+    Norm N = normalize(xy, off[k], off[k + 1], keep.data(), turn.data(), idx.data());
+    if (N.code == NONFINITE || N.code == RANGE) {
+      out.status = N.code;
+      bad_poly = k;
+      bad_vertex = N.vertex;
+      break;
+    }
+    if (N.code == OK) {
+      if (N.k < 3) continue;  // a point or a segment: no area
+      for (i64 t = 0; t < N.k; ++t) {
+        i64 i = N.at(t);
+        pts.push_back(ov::P{ov::dd(xy[2 * i]), ov::dd(xy[2 * i + 1])});
+      }
+      convex.push_back(1);
+    } else {
+      std::vector<ov::P> r = general_ring(xy, off[k], off[k + 1]);
+      if (r.empty()) continue;
+      pts.insert(pts.end(), r.begin(), r.end());
+      convex.push_back(0);
+    }
+    po.push_back((i64)pts.size());
+  }
+  if (out.status == OK) {
+    PointSource src{&pts, &po, &convex};
+    with_workspace([&](Workspace& w) {
+      w.u.cull = cull;
+      w.u.max_crossings = max_crossings;
+      w.u.max_pairs = max_pairs;
+      w.u.unite(src, out);
+      st = w.u.st;
+      return 0;
+    });
+  }
 }
 
 }  // namespace un
