@@ -457,4 +457,29 @@ inline bool box_tree_pairs(i64 n, const double* x0, const double* x1, const doub
   return true;
 }
 
+// The items of a uniform grid's cells (a CSR list): item it (of n) goes into every cell
+// (c, r) with xa <= c <= xb, ya <= r <= yb, range(it, xa, xb, ya, yb) giving them; off
+// has nx * ny + 1 entries, items the item ids cell after cell, in item order. The one
+// bucketing of the planner's and the mesh's grids (planning.hpp, navmesh_build.hpp).
+template <class Range>
+void grid_buckets(i64 n, i64 nx, i64 ny, Range&& range, std::vector<i64>& off,
+                  std::vector<int>& items) {
+  off.assign(nx * ny + 1, 0);
+  for (i64 it = 0; it < n; ++it) {
+    i64 xa, xb, ya, yb;
+    range(it, xa, xb, ya, yb);
+    for (i64 r = ya; r <= yb; ++r)
+      for (i64 c = xa; c <= xb; ++c) off[r * nx + c + 1] += 1;
+  }
+  for (i64 c = 0; c < nx * ny; ++c) off[c + 1] += off[c];
+  items.assign(off[nx * ny], 0);
+  std::vector<i64> fill(off.begin(), off.end() - 1);
+  for (i64 it = 0; it < n; ++it) {
+    i64 xa, xb, ya, yb;
+    range(it, xa, xb, ya, yb);
+    for (i64 r = ya; r <= yb; ++r)
+      for (i64 c = xa; c <= xb; ++c) items[fill[r * nx + c]++] = (int)it;
+  }
+}
+
 }  // namespace mk

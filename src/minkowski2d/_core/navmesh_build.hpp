@@ -132,27 +132,12 @@ struct NavMesh {
     gy0 = Y0 - gcs * 0.5;
     gnx = (i64)std::ceil((X1 - gx0) / gcs) + 1;
     gny = (i64)std::ceil((Y1 - gy0) / gcs) + 1;
-    goff.assign(gnx * gny + 1, 0);
-    auto range = [&](int p, i64& xa, i64& xb, i64& ya, i64& yb) {
+    auto range = [&](i64 p, i64& xa, i64& xb, i64& ya, i64& yb) {
       const double* b = pbox.data() + 4 * p;
       const double sl = gslack;
       xa = cellx(b[0] - sl), xb = cellx(b[2] + sl), ya = celly(b[1] - sl), yb = celly(b[3] + sl);
     };
-    for (int p = 0; p < P; ++p) {
-      i64 xa, xb, ya, yb;
-      range(p, xa, xb, ya, yb);
-      for (i64 r = ya; r <= yb; ++r)
-        for (i64 c = xa; c <= xb; ++c) goff[r * gnx + c + 1] += 1;
-    }
-    for (i64 c = 0; c < gnx * gny; ++c) goff[c + 1] += goff[c];
-    gitems.assign(goff[gnx * gny], 0);
-    std::vector<i64> fill(goff.begin(), goff.end() - 1);
-    for (int p = 0; p < P; ++p) {
-      i64 xa, xb, ya, yb;
-      range(p, xa, xb, ya, yb);
-      for (i64 r = ya; r <= yb; ++r)
-        for (i64 c = xa; c <= xb; ++c) gitems[fill[r * gnx + c]++] = p;
-    }
+    grid_buckets(P, gnx, gny, range, goff, gitems);
   }
 
   // ------------------------------------------------------------------ build

@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "boxes.hpp"
 #include "convex.hpp"
 #include "exact.hpp"
 #include "parallel.hpp"
@@ -453,7 +454,6 @@ struct Planner {
       ny = (i64)std::max(1.0, std::min(4096.0, std::ceil(wy / cs)));
       cs = std::max(wx / (double)nx, wy / (double)ny);
     }
-    cell_off.assign(nx * ny + 1, 0);
     auto range = [&](i64 it, i64& xa, i64& xb, i64& ya, i64& yb) {
       const T* b = tbox.data() + 4 * it;
       xa = cellx((double)b[0] - slack);
@@ -461,21 +461,7 @@ struct Planner {
       ya = celly((double)b[1] - slack);
       yb = celly((double)b[3] + slack);
     };
-    for (i64 it = 0; it < I; ++it) {
-      i64 xa, xb, ya, yb;
-      range(it, xa, xb, ya, yb);
-      for (i64 r = ya; r <= yb; ++r)
-        for (i64 c = xa; c <= xb; ++c) cell_off[r * nx + c + 1] += 1;
-    }
-    for (i64 c = 0; c < nx * ny; ++c) cell_off[c + 1] += cell_off[c];
-    cell_items.assign(cell_off[nx * ny], 0);
-    std::vector<i64> fill(cell_off.begin(), cell_off.end() - 1);
-    for (i64 it = 0; it < I; ++it) {
-      i64 xa, xb, ya, yb;
-      range(it, xa, xb, ya, yb);
-      for (i64 r = ya; r <= yb; ++r)
-        for (i64 c = xa; c <= xb; ++c) cell_items[fill[r * nx + c]++] = (int)it;
-    }
+    grid_buckets(I, nx, ny, range, cell_off, cell_items);
   }
 
   void build_seams() {
