@@ -62,12 +62,7 @@
 namespace mk {
 namespace un {
 
-using ov::BEdge;
-using ov::DD;
-using ov::EdgeIn;
-using ov::Geo;
-using ov::P;
-using ov::Rings;
+// (ov::BEdge, DD, EdgeIn, Geo, P, Rings are named in mk::un by union_index.hpp)
 
 // ------------------------------------------------------------------------------------
 // the union
