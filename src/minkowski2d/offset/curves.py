@@ -57,17 +57,6 @@ _HINT = "repair it: the boundary must not cross itself, holes must lie inside"
 _NONFINITE_HINT = "remove NaN and inf"
 
 
-def _arrays(geoms: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Coordinates (closing repeats kept), ring offsets and polygon offsets of shapely
-    Polygons (a list or object array; empty ones dropped): ``polygon_arrays``'s."""
-    from .._engine.polygon import polygon_arrays
-
-    if not isinstance(geoms, np.ndarray):
-        geoms = np.array(geoms, dtype=object)
-    xy, ro, po, _ = polygon_arrays(geoms)
-    return xy, ro, po
-
-
 def _validated(
     xy: np.ndarray, ring_off: np.ndarray, poly_off: np.ndarray, name: str, unite: bool
 ) -> _Input:
@@ -96,7 +85,7 @@ def _validated(
 
 def _shapely_input(geom: Any, name: str) -> _Input:
     """A shapely ring, polygon, multipolygon or collection of them, validated."""
-    from .._engine.polygon import polygon_parts
+    from .._engine.polygon import polygon_arrays, polygon_parts
 
     got = polygon_parts(geom, name, hint="pass the polygons only")
     if got is None:
@@ -106,7 +95,8 @@ def _shapely_input(geom: Any, name: str) -> _Input:
             argument=name,
             hint="pass the coordinates as an (n, 2) array for a point or a segment",
         )
-    return _validated(*_arrays(got.parts), name, got.collection and len(got.parts) > 1)
+    xy, ro, po, _ = polygon_arrays(got.parts)
+    return _validated(xy, ro, po, name, got.collection and len(got.parts) > 1)
 
 
 #: constant arrays of the single-polygon call
