@@ -185,7 +185,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
         tx = type(x)
         if tx is type(y) and (tx is int or tx is float):
             if tx is float and ((x - x) or (y - y)):  # nan for inf and nan, 0.0 otherwise
-                raise nonfinite(name, k, {k: (x, y)})
+                raise nonfinite(name, k, point=(x, y))
             if tx is int:
                 kinds.add(INT)
                 if not (-_F53 <= x <= _F53 and -_F53 <= y <= _F53):
@@ -206,7 +206,7 @@ def py_points(seq: Any, name: str) -> tuple[list[tuple[Any, Any]], str]:
             if kv == FLOAT:
                 v = float(v)
                 if v - v:
-                    raise nonfinite(name, k, {k: (x, y)})
+                    raise nonfinite(name, k, point=(x, y))
             elif kv == INT:
                 v = int(v)
                 if not -_F53 <= v <= _F53:

@@ -129,10 +129,14 @@ def nonfinite(
     coords: Any = None,
     *,
     where: str | None = None,
+    point: Any = None,
     hint: str | None = None,
 ) -> GeometryError:
     """``status_error(Status.NONFINITE, ...)``: the one message of a NaN or infinite
-    coordinate, for the readers that find it before the core does."""
+    coordinate, for the readers that find it before the core does (``point``: the bad
+    vertex's coordinates, when the caller has them but no array of all)."""
+    if point is not None:
+        coords = {vertex: point}
     return status_error(Status.NONFINITE, vertex, name, coords, where=where, hint=hint)
 
 
