@@ -18,8 +18,9 @@ import numpy as np
 from ._engine import core
 from ._engine import dispatch as D
 from ._engine import options as _options
-from ._engine.coerce import as_array, is_shapely
+from ._engine.coerce import is_shapely
 from ._engine.containers import apply, boxed, is_many
+from ._engine.reader import read
 from ._engine.status import nonfinite
 from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
@@ -127,7 +128,7 @@ class Ragged:
                 else None
             )
             if a is None or a.shape[1] != 2 or a.shape[0] == 0:
-                got, kind = as_array(p, f"{name}[{k}]")
+                got, kind, _ = read(p, f"{name}[{k}]", numbers="int64")
                 if isinstance(got, list):
                     raise ShapeError(
                         f"{name}[{k}]: coordinates need exact Python numbers; "

@@ -27,20 +27,20 @@ Examples
 
 from __future__ import annotations
 
-from fractions import Fraction
 from typing import Any, cast
 
 import numpy as np
 
 from ._engine import core
 from ._engine import options as _options
-from ._engine.coerce import as_array, is_shapely
+from ._engine.coerce import is_shapely
 from ._engine.containers import unbox
 from ._engine.overlay import check as _check_overlay
 from ._engine.overlay import closed_geometries
-from ._engine.polygon import Rings, polygon_arrays, polygon_parts, problem_error
+from ._engine.polygon import Rings, polygon_arrays, problem_error
+from ._engine.reader import read
 from .batch import Ragged
-from .errors import GeometryError, ShapeError
+from .errors import ShapeError
 
 __all__ = [
     "union",
@@ -69,68 +69,13 @@ _POLYGONAL = ("Polygon", "MultiPolygon")
 # reading operands
 
 
-def _ring(obj: Any, name: str) -> Any:
-    """A shapely Polygon of an (n, 2) ring, coordinates exactly as given (float64)."""
-    import shapely
-
-    data, _ = as_array(obj, name, check_finite=False)
-    if isinstance(data, list):  # Fractions or integers beyond int64
-        vals = np.array([[float(x), float(y)] for x, y in data], dtype=np.float64)
-        for k, (x, y) in enumerate(data):
-            if Fraction(x) != Fraction(vals[k, 0]) or Fraction(y) != Fraction(vals[k, 1]):
-                raise GeometryError(
-                    f"{name}: vertex {k} is not a float64 value; the booleans compute on "
-                    "float64 coordinates exactly and would round it",
-                    argument=name,
-                    vertex=k,
-                    hint="round the coordinates to float64 first (float(x))",
-                )
-        data = vals
-    arr = np.asarray(data)
-    if arr.dtype.kind in "iu":
-        f = arr.astype(np.float64)
-        bad = np.flatnonzero((f.astype(arr.dtype) != arr).any(axis=1) if len(arr) else [])
-        if len(bad):
-            k = int(bad[0])
-            raise GeometryError(
-                f"{name}: vertex {k} has an integer coordinate that float64 cannot hold "
-                "exactly (more than 53 significant bits)",
-                argument=name,
-                vertex=k,
-                hint="scale the coordinates to at most 53 significant bits",
-            )
-        arr = f
-    arr = np.asarray(arr, dtype=np.float64).reshape(-1, 2)
-    if len(arr) == 0:
-        return shapely.Polygon()
-    # a ring of fewer than 3 distinct points is a polygon shapely cannot build: keep its
-    # coordinates as a degenerate shell (the core gives it no area)
-    closed = np.vstack([arr, arr[:1]]) if len(arr) < 4 or (arr[0] != arr[-1]).any() else arr
-    while len(closed) < 4:
-        closed = np.vstack([closed, closed[-1:]])
-    return shapely.Polygon(closed)
-
-
 def _polygonal(obj: Any, name: str) -> Any:
-    """One operand as a shapely Polygon or MultiPolygon (possibly empty)."""
-
-    if isinstance(obj, Ragged):
-        obj = obj.to_list()
-    if is_shapely(obj):
-        gt = obj.geom_type
-        if gt in _POLYGONAL:
-            return obj
-        got = polygon_parts(obj, name, empty_ok=True, hint="clip lines with mk.clip_lines")
-        if got is None:
-            raise ShapeError(
-                f"{name}: a {gt} is not polygonal",
-                argument=name,
-                hint="pass polygons; clip lines with mk.clip_lines",
-            )
-        return _multi(list(got.parts))
-    if isinstance(obj, (list, tuple)) and obj and (is_shapely(obj[0]) or np.ndim(obj[0]) == 2):
-        return _multi([_polygonal(item, f"{name}[{k}]") for k, item in enumerate(obj)])
-    return _ring(obj, name)
+    """One operand as a shapely Polygon or MultiPolygon (possibly empty): the one reader,
+    coordinates exactly float64, a flat ring kept (the core gives it no area)."""
+    if is_shapely(obj) and obj.geom_type in _POLYGONAL:
+        return obj
+    got = read(obj, name, accept="polygons", numbers="float64", degenerate="keep")
+    return got.geometry()
 
 
 def _paired(
@@ -153,16 +98,6 @@ def _paired(
             argument=names[1],
         )
     return ga, gb, [box.label(k) for k in range(n)]
-
-
-def _multi(geoms: list) -> Any:
-    import shapely
-
-    polys: list[Any] = []  # shapely Polygons
-    for g in geoms:
-        polys.extend(shapely.get_parts(g).tolist() if g.geom_type == "MultiPolygon" else [g])
-    polys = [p for p in polys if not p.is_empty]
-    return polys[0] if len(polys) == 1 else shapely.MultiPolygon(polys)
 
 
 class _Arrays:
@@ -460,12 +395,8 @@ def _lineal(obj: Any, name: str) -> Any:
         obj = obj.to_list()
     if isinstance(obj, (list, tuple)) and obj and (is_shapely(obj[0]) or np.ndim(obj[0]) == 2):
         return _multiline([_lineal(item, f"{name}[{k}]") for k, item in enumerate(obj)])
-    ring = _ring(obj, name)  # the same number policy as a polygon's ring
-    c = np.asarray(ring.exterior.coords)[:-1] if not ring.is_empty else np.empty((0, 2))
-    if len(c) < 2:
-        return shapely.LineString()
-    n = len(np.asarray(as_array(obj, name, check_finite=False)[0]).reshape(-1, 2))
-    return shapely.LineString(c[:n]) if n >= 2 else shapely.LineString()
+    c = read(obj, name, accept="line", numbers="float64")  # a polygon's number policy
+    return shapely.LineString(c) if len(c) >= 2 else shapely.LineString()
 
 
 def _multiline(parts: list) -> Any:

@@ -38,9 +38,10 @@ import numpy as np
 from ._engine import core
 from ._engine import dispatch as D
 from ._engine import options as _options
-from ._engine.coerce import INT, as_array
+from ._engine.coerce import INT
 from ._engine.containers import apply, boxed
 from ._engine.exact_collision import _py_contains, _py_pair
+from ._engine.reader import read
 from ._types import ArrayLike2, PolygonsLike, ProgressLike
 from .errors import ShapeError
 
@@ -124,8 +125,8 @@ def _operand(obj: Any, name: str, hull: bool) -> tuple[Any, str]:
     """``(data, kind)``: an (n, 2) int64/float64 ndarray, or a list of exact points."""
     if hull:
         obj = D.hull(obj, "points")
-    data, kind = as_array(obj, name)
-    return data, kind
+    op = read(obj, name, numbers="int64")
+    return op.data, op.kind
 
 
 def _kernel_view(data: np.ndarray) -> np.ndarray:
@@ -327,7 +328,7 @@ def contains(poly: ArrayLike2, points: Any, *, hull: bool = False) -> Any:
     if not one and np.shape(points)[:1] == (0,):
         return np.zeros(0, bool)
     dp, kp = _operand(poly, "poly", hull)
-    dq, kq = as_array([points] if one else points, "points")
+    dq, kq, _ = read([points] if one else points, "points", numbers="int64")
     if isinstance(dp, np.ndarray) and isinstance(dq, np.ndarray):
         out = np.zeros(len(dq), np.bool_)
         code, which, v = core.coll_contains(

@@ -253,7 +253,7 @@ def minkowski_sum(a: ArrayLike2, b: ArrayLike2, *, hull: bool = False) -> Polygo
             return out
         if code != _UNHANDLED:
             raise D.status_error(code, v, _NAMES[which], (a, b, None)[which])
-    A, B, out_kind, path = D.pair(a, b, ("a", "b"), fused=not hull)
+    A, B, out_kind, path = D.pair(a, b, ("a", "b"))
     if path == "py":
         return _sum_exact(A, B, out_kind, hull)
     if hull:

@@ -32,6 +32,7 @@ import numpy as np
 
 from ._engine import core
 from ._engine import dispatch as D
+from ._engine.reader import read
 from ._engine.status import nonfinite
 from .errors import NonFiniteError, ShapeError
 
@@ -52,7 +53,7 @@ def _cross(pts: tuple[Any, ...], names: tuple[str, ...]) -> int:
     """Exact sign of (pts[1] - pts[0]) x (pts[3] - pts[2]), on the path the dispatcher
     chooses for the four points (the one router: core int64, core float64, or exact)."""
     try:
-        op = D.operand(list(pts), "point")
+        op = read(list(pts), "point")
     except NonFiniteError as exc:
         k = exc.vertex if isinstance(exc.vertex, int) and 0 <= exc.vertex < len(pts) else 0
         raise nonfinite(names[k], k, pts, where="the point") from None

@@ -30,89 +30,24 @@ Examples
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 
 from . import core
 from . import exact as _exact
-from .coerce import EXACT, FLOAT, INT, XFLOAT, as_array, py_points
+from .coerce import EXACT, FLOAT, XFLOAT
 from .core import Status
+from .reader import Operand, read
 from .status import raise_status, status_error
 
-__all__ = ["Status", "Operand", "operand", "pair", "status_error", "raise_status"]
+__all__ = ["Status", "Operand", "pair", "status_error", "raise_status"]
 
 INT_LIMIT = core.INT_LIMIT
-_CORE_DTYPES = (np.dtype(np.int64), np.dtype(np.float64))
 
 #: Tests set this to send everything through the exact Python path, to check that it and
 #: the core give identical results ("every speed identical").
 FORCE_EXACT = False
-
-
-class Operand(NamedTuple):
-    """One validated polygon: ``data`` is a C-contiguous (n, 2) int64/float64 ndarray
-    when ``path`` is ``"i"``/``"f"``, else a list of exact ``(x, y)`` tuples; ``kind`` is
-    the dtype policy's kind of the input (``int``, ``float``, ``xfloat``, ``exact``)."""
-
-    data: Any
-    kind: str
-    path: str
-
-
-def _int_in_core(arr: np.ndarray) -> bool:
-    return arr.size == 0 or (int(arr.max()) < INT_LIMIT and int(arr.min()) > -INT_LIMIT)
-
-
-def operand(obj: Any, name: str, fused: bool = False) -> Operand:
-    """Validate one polygon and choose its path (see the module doc).
-
-    With ``fused`` the caller's core function checks the int64 range itself in its first
-    pass (returning ``Status.RANGE``), so a C-contiguous int64 array is passed on as is.
-    """
-    t = type(obj)
-    if t is list or t is tuple:
-        res = core.flatten([obj])
-        status = res[3]
-        if status == Status.OK:
-            arr = res[0]
-            return Operand(arr, FLOAT if res[2] else INT, "f" if res[2] else "i")
-        if status == Status.NONFINITE:
-            raise status_error(status, res[5], name, obj)
-        if len(obj) == 0:
-            pass  # as_array raises the specific error
-        else:
-            pts, kind = py_points(obj, name)
-            return _from_points(pts, kind)
-    if (
-        t is np.ndarray
-        and obj.ndim == 2
-        and obj.shape[1] == 2
-        and obj.shape[0] > 0
-        and obj.dtype in _CORE_DTYPES
-        and obj.flags.c_contiguous
-    ):
-        # the common case, checked in the core's first pass: finiteness (floats) and the
-        # int64 range (RANGE sends the caller to the exact path)
-        return Operand(
-            obj, INT if obj.dtype == np.int64 else FLOAT, "i" if obj.dtype == np.int64 else "f"
-        )
-    data, kind = as_array(obj, name, check_finite=True)
-    if isinstance(data, list):
-        return _from_points(data, kind)
-    if kind == INT:
-        if _int_in_core(data):
-            return Operand(np.ascontiguousarray(data, dtype=np.int64), INT, "i")
-        return Operand([tuple(r) for r in data.tolist()], INT, "py")
-    return Operand(np.ascontiguousarray(data, dtype=np.float64), FLOAT, "f")
-
-
-def _from_points(pts: list, kind: str) -> Operand:
-    if kind == FLOAT:
-        return Operand(np.array(pts, dtype=np.float64).reshape(-1, 2), FLOAT, "f")
-    if kind == INT and all(-INT_LIMIT < v < INT_LIMIT for p in pts for v in p):
-        return Operand(np.array(pts, dtype=np.int64).reshape(-1, 2), INT, "i")
-    return Operand(pts, kind, "py")
 
 
 def _out_kind(*kinds: str) -> str:
@@ -157,14 +92,14 @@ def unify(A: Operand, B: Operand) -> tuple[Any, Any, str, str]:
     return exact_list(A), exact_list(B), out_kind, "py"
 
 
-def pair(a: Any, b: Any, names: tuple[str, str], fused: bool = False) -> tuple[Any, Any, str, str]:
+def pair(a: Any, b: Any, names: tuple[str, str]) -> tuple[Any, Any, str, str]:
     """Validate two polygons and bring them to one path: ``(A, B, out_kind, path)``."""
-    return unify(operand(a, names[0], fused), operand(b, names[1], fused))
+    return unify(read(a, names[0]), read(b, names[1]))
 
 
 def one(p: Any, name: str) -> tuple[Any, str, str]:
     """Validate one polygon: ``(data, out_kind, path)`` with exact lists on path "py"."""
-    op = operand(p, name)
+    op = read(p, name)
     if op.path == "py" or FORCE_EXACT:
         return exact_list(op), _out_kind(op.kind), "py"
     return op.data, _out_kind(op.kind), op.path

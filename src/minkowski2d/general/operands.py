@@ -3,32 +3,23 @@ exactly in the core (no GEOS); convex decomposition."""
 
 from __future__ import annotations
 
-import math
-from fractions import Fraction
 from typing import Any
 
 import numpy as np
 
-from .._engine import core
 from .._engine import options as _options
-from .._engine.coerce import as_array, fits_float64, is_shapely, to_float
+from .._engine.reader import Polygons, read
 from ..batch import Ragged
-from ..errors import (
-    GeometryError,
-    OverflowGeometryError,
-    ShapeError,
-)
+from ..errors import ShapeError
 
 SUM_METHODS = ("decomposition", "convolution")
 DECOMPOSITIONS = ("hertel-mehlhorn", "triangulation")
 
 
 # --------------------------------------------------------------------------------------
-# input
-#
-# Reading an operand is two passes: _parse checks the types and keeps the raw
-# coordinates, _build validates them exactly in the core (no GEOS). Nothing is scaled:
-# the core decides exactly at every magnitude and rounds each result vertex once.
+# input: the one reader (minkowski2d._engine.reader), validated exactly in the core (no
+# GEOS). Nothing is scaled: the core decides exactly at every magnitude and rounds each
+# result vertex once.
 
 
 class _Operand:
@@ -79,179 +70,51 @@ class _Operand:
         return np.asarray(D.hull(self.rings.coords, "points"), dtype=np.float64)
 
 
-class _Raw:
-    """A parsed, not yet validated operand: a shapely Polygon/MultiPolygon (``geom``),
-    float64 coordinates (``coords``), exact coordinates (``exact``: Fractions, rounded
-    only after the exact scale) or a collection of them (``items``)."""
-
-    __slots__ = ("kind", "value", "name")
-
-    def __init__(self, kind: str, value: Any, name: str) -> None:
-        self.kind = kind
-        self.value = value
-        self.name = name
+_HINT = "the boundary must not cross itself; holes must lie inside"
 
 
-_EXACT_INT = core.FLOAT_EXACT_INT
-
-
-def _int_coords(arr: np.ndarray, name: str) -> np.ndarray:
-    """float64 copy of int coordinates; refuse an int that float64 cannot hold exactly."""
-    big = np.abs(arr.astype(np.float64)) >= _EXACT_INT
-    if big.any():
-        for k in np.flatnonzero(big.any(axis=1)):
-            for v in arr[k].tolist():
-                _check_int(int(v), name, int(k))
-    return arr.astype(np.float64)
-
-
-def _check_int(v: int, name: str, vertex: int) -> None:
-    if not fits_float64(v):
-        raise GeometryError(
-            f"{name}: vertex {vertex} has the integer coordinate {v}, which float64 "
-            "cannot hold exactly (more than 53 significant bits, or beyond its range); the "
-            "general routines "
-            "compute in float64 and would round it",
-            argument=name,
-            vertex=vertex,
-            hint="round or scale the coordinates to at most 53 significant bits, "
-            "or use the exact convex routines",
-        )
-
-
-def _coords_raw(obj: Any, name: str) -> _Raw:
-    data, kind = as_array(obj, name)
-    if isinstance(data, list):  # exact kinds: Fractions or huge ints
-        for k, p in enumerate(data):
-            for v in p:
-                if isinstance(v, int):
-                    _check_int(v, name, k)
-        return _Raw("exact", [(Fraction(x), Fraction(y)) for x, y in data], name)
-    if data.dtype.kind == "i":
-        return _Raw("coords", _int_coords(data, name), name)
-    return _Raw("coords", np.asarray(data, dtype=np.float64), name)
-
-
-def _parse(obj: Any, name: str) -> _Raw:
-    """Check the type of one operand (see :func:`minkowski_sum_general`); no GEOS call."""
-
-    if isinstance(obj, Ragged):
-        obj = obj.to_list()
-    if is_shapely(obj):
-        from .._engine.polygon import polygon_parts
-
-        got = None if obj.geom_type == "LinearRing" else polygon_parts(obj, name)
-        if got is None:
-            return _coords_raw(obj, name)  # ring, line, points
-        if got.collection:  # a collection of polygons: their union is the operand
-            parts = [_Raw("geom", p, f"{name}[{k}]") for k, p in enumerate(got.parts)]
-            return _Raw("items", parts, name)
-        return _Raw("geom", obj, name)
+def _read(obj: Any, name: str) -> _Operand:
+    """One operand through the one reader (polygons, collections united, flat sets as
+    their hull; ints exact in float64, Fractions rounded once), validated exactly in the
+    core (no GEOS)."""
     if type(obj).__name__ == "UnboundedPolygon":
         raise ShapeError(
             f"{name}: the polygon has an unbounded outer boundary (CGAL N = 0); "
             "its Minkowski sum is unbounded too",
             argument=name,
         )
-    if isinstance(obj, (list, tuple)) and obj and (is_shapely(obj[0]) or np.ndim(obj[0]) == 2):
-        # a collection of polygons: their union is the operand
-        return _Raw("items", [_parse(item, f"{name}[{k}]") for k, item in enumerate(obj)], name)
-    return _coords_raw(obj, name)
+    got = read(
+        obj, name, accept="polygons", numbers="fractions", validate=True,
+        degenerate="hull", hint=_HINT,
+    )  # fmt: skip
+    return _operand(got)
 
 
-def _float_ring(raw: _Raw) -> np.ndarray:
-    """float64 coordinates of a parsed ring; exact values (Fractions, big ints) rounded
-    once, correctly; a value beyond float64, or one that would lose bits below 2**-1022,
-    is an OverflowGeometryError naming the vertex."""
-    if raw.kind == "coords":
-        return raw.value
-    name = raw.name
-    out = np.empty((len(raw.value), 2))
-    for k, p in enumerate(raw.value):
-        for j, v in enumerate(p):
-            f = to_float(v)
-            if math.isinf(f):
-                raise OverflowGeometryError(
-                    f"{name}: vertex {k} has a coordinate beyond float64 (±1.8e308)",
-                    argument=name,
-                    vertex=k,
-                    hint="scale the input down; coordinates must fit in float64",
-                )
-            if v != 0 and abs(f) < 2.0**-1022:
-                raise OverflowGeometryError(
-                    f"{name}: vertex {k} has a coordinate that underflows float64 (a "
-                    "nonzero value below 2**-1022 would be rounded to a multiple of "
-                    "2**-1074)",
-                    argument=name,
-                    vertex=k,
-                    hint="scale the input up; coordinates must be float64 normals",
-                )
-            out[k, j] = f
-    return out
+def _operand(got: Polygons) -> _Operand:
+    if got.flat is not None:
+        return _Operand(None, None, got.flat, got.name)
+    if got.parts is None:
+        return _Operand(got.rings, got.orientation, None, got.name)
+    # a collection of polygons: the operand is their union (the exact overlay)
+    from .._engine.overlay import overlay
+    from .._engine.polygon import check_split, oriented, rings_of
 
-
-_HINT = "the boundary must not cross itself; holes must lie inside"
-
-
-def _checked(rings: Any, name: str, multi: bool) -> _Operand:
-    """An operand of validated rings (a polygon whose hole touches its shell twice is
-    split into its parts by the exact overlay)."""
-    from .._engine.polygon import check_split
-
-    rings, ck = check_split(rings, name, _HINT, disjoint=multi)
-    return _Operand(rings, ck.orientation, None, name)
-
-
-def _build(raw: _Raw) -> _Operand:
-    """Validate a parsed operand exactly (the core's checks; no GEOS)."""
-    from .._engine.polygon import Rings, rings_of, rings_of_array
-
-    name = raw.name
-    rings: list[np.ndarray] | Rings
-    if raw.kind == "items":
-        rings = []
-        for item in raw.value:
-            op = _build(item)
-            if op.flat is not None:
-                # uniting would drop it, yet {p} ⊕ B has area: refuse rather than lose it
-                raise ShapeError(
-                    f"{item.name}: a point or segment in a collection of polygons "
-                    "(every member of a collection must have area)",
-                    argument=item.name,
-                    hint="pass the point or segment as an operand of its own",
-                )
-            from .._engine.polygon import oriented
-
-            o = oriented(op.rings, op.orientation)
-            ro = o.ring_offsets
-            rings += [o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)]
-        from .._engine.overlay import overlay
-
-        g = overlay(rings, argument=name)
-        if g.is_empty:
-            raise ShapeError(f"{name}: the polygons have no area", argument=name)
-        return _checked(rings_of(g), name, g.geom_type == "MultiPolygon")
-    if raw.kind == "geom":
-        return _checked(rings_of(raw.value), name, raw.value.geom_type == "MultiPolygon")
-    ring = _float_ring(raw)
-    rings = rings_of_array(ring)
-    if len(ring):
-        from .._engine.polygon import is_flat, probe
-
-        status, reason, _, _, orientation, disconnected = probe(rings)
-        if status == core.Status.OK and not disconnected.any():
-            return _Operand(rings, orientation, None, name)
-        if is_flat(status, reason):
-            # a point, a segment, or collinear points: a degenerate convex set
-            from .._engine import dispatch as D
-
-            return _Operand(None, None, np.asarray(D.hull(ring, "points"), dtype=np.float64), name)
-    return _checked(rings, name, False)
+    rings: list[np.ndarray] = []
+    for part in got.parts:
+        op = _operand(part)
+        o = oriented(op.rings, op.orientation)
+        ro = o.ring_offsets
+        rings += [o.coords[ro[r] : ro[r + 1]] for r in range(len(ro) - 1)]
+    g = overlay(rings, argument=got.name)
+    if g.is_empty:
+        raise ShapeError(f"{got.name}: the polygons have no area", argument=got.name)
+    united, ck = check_split(rings_of(g), got.name, _HINT, disjoint=g.geom_type == "MultiPolygon")
+    return _Operand(united, ck.orientation, None, got.name)
 
 
 def _operands(*pairs: tuple[Any, str]) -> list[_Operand]:
-    """Parse and validate the operands."""
-    return [_build(_parse(obj, name)) for obj, name in pairs]
+    """Read and validate the operands."""
+    return [_read(obj, name) for obj, name in pairs]
 
 
 def _pieces(op: _Operand, method: str = "hertel-mehlhorn") -> Ragged:

@@ -21,10 +21,9 @@ from .operands import (
     _HINT,
     DECOMPOSITIONS,
     SUM_METHODS,
-    _build,
     _Operand,
-    _parse,
     _pieces,
+    _read,
 )
 
 # --------------------------------------------------------------------------------------
@@ -38,7 +37,7 @@ class _Prepared:
     __slots__ = ("op", "flat", "name", "_pieces")
 
     def __init__(self, obj: Any, name: str) -> None:
-        self.op = _build(_parse(obj, name))
+        self.op = _read(obj, name)
         self.flat = self.op.flat is not None
         self.name = name
         self._pieces: Ragged | None = None

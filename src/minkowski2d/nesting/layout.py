@@ -645,7 +645,8 @@ def _polygon(p: Any, name: str) -> Any:
     float64 one (refused when a coordinate is not a float64 value); errors name it."""
     import shapely
 
-    from .._engine.coerce import as_array, is_shapely
+    from .._engine.coerce import is_shapely
+    from .._engine.reader import read
     from ..errors import EmptyGeometryError, ShapeError
 
     if p is None:
@@ -660,7 +661,7 @@ def _polygon(p: Any, name: str) -> Any:
                 hint="give each connected part as its own Polygon",
             )
         return p
-    a, _ = as_array(p, name)
+    a = read(p, name, numbers="int64").data
     rows = [(_float_value(x, name), _float_value(y, name)) for x, y in np.asarray(a).tolist()]
     if len(rows) < 3:
         raise ShapeError(

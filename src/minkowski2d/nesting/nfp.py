@@ -34,7 +34,8 @@ from typing import Any
 import numpy as np
 
 from .._engine import options as _options
-from .._engine.coerce import as_array, is_shapely
+from .._engine.coerce import is_shapely
+from .._engine.reader import read
 from ..errors import (
     EmptyGeometryError,
     GeometryError,
@@ -127,7 +128,8 @@ def rotate_part(part: Any, angle: Any) -> Any:
     [[0, 0], [0, 2], [-1, 2]]
     """
     if not is_shapely(part):
-        as_array(part, "part")  # the specific error for a bad ring (the part is kept as is)
+        # the specific error for a bad ring (the part is kept as is)
+        read(part, "part", numbers="int64")
     if _quarter_turns(angle, "angle") == 0:
         return part if is_shapely(part) else np.asarray(part)
     return _rotate(part, angle)
@@ -404,7 +406,8 @@ def _parts(parts: Any) -> list:
             if p.geom_type not in ("Polygon", "MultiPolygon", "LinearRing"):
                 raise ShapeError(f"{name}: a {p.geom_type} is not a polygon", argument=name)
             continue
-        as_array(p, name)  # raises the specific error for a bad ring (not kept: exactness)
+        # raises the specific error for a bad ring (not kept: exactness)
+        read(p, name, numbers="int64")
     return out
 
 

@@ -85,12 +85,13 @@ def _polygon(p: Any, name: str) -> Any:
     to float64 once and checked by the core's exact polygon test."""
     import shapely
 
-    from .._engine.coerce import as_array, is_shapely
+    from .._engine.coerce import is_shapely
+    from .._engine.reader import read
     from .layout import _polygon as layout_polygon
 
     if p is None or is_shapely(p):
         return layout_polygon(p, name)
-    a, _ = as_array(p, name)
+    a = read(p, name, numbers="int64").data
     poly = shapely.Polygon(np.asarray(a, dtype=np.float64))
     if not poly.is_valid or poly.area == 0:
         from ..general import convex_decomposition

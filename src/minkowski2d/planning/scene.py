@@ -12,6 +12,7 @@ import numpy as np
 from .._engine import core
 from .._engine import dispatch as D
 from .._engine.coerce import ints_fit_float64, is_shapely
+from .._engine.reader import read
 from .._engine.status import nonfinite
 from ..errors import (
     EmptyGeometryError,
@@ -61,16 +62,7 @@ def _pieces(obj: Any, name: str) -> tuple[list[np.ndarray], str]:
                 raise EmptyGeometryError(f"{name}: empty Polygon", argument=name)
             if len(obj.interiors):
                 return _triangulate(obj, name), "float"
-            import shapely
-
-            obj = shapely.get_coordinates(obj.exterior)[:-1]
-    data, out_kind, path = D.one(obj, name)
-    if path == "py":
-        raise ShapeError(
-            f"{name}: the planner takes int64 (|x| < 2**62) or float64 coordinates",
-            argument=name,
-            hint="scale the scene or pass floats",
-        )
+    data, _, path = read(obj, name, numbers="core")
     kind = "int" if path == "i" else "float"
     idx, _, code, v = (core.normalize_i if path == "i" else core.normalize_f)(data)
     if code == D.Status.OK:
@@ -216,10 +208,7 @@ def _union_shapes(pieces: list) -> Any:
 
 
 def _ring_coords(workspace: Any) -> np.ndarray:
-    data, _, path = D.one(workspace, "workspace")
-    if path == "py":
-        raise ShapeError("workspace: coordinates must be int64 or float64", argument="workspace")
-    return np.asarray(data, dtype=np.float64)
+    return np.asarray(read(workspace, "workspace", numbers="core").data, dtype=np.float64)
 
 
 def _occupancy(occupancy: Any) -> np.ndarray:
