@@ -153,6 +153,43 @@ def test_each_fault_has_one_message():
     assert homes == {w: {m} for w, m in ONE_MESSAGE.items()}, homes
 
 
+#: the reading primitives (the dtype policy's, the shapely readings, the core's list pass):
+#: every polygon is read through the one reader, _engine/reader.read; only it (and the
+#: modules that define them) call these
+READING = {"as_array", "py_points", "polygon_parts", "flatten", "_shapely_coords"}
+READER_HOMES = {"_engine/reader.py", "_engine/coerce.py", "_engine/polygon.py", "_engine/core.py"}
+
+
+def _called_names(tree: ast.AST) -> set[tuple[str, int]]:
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            f = node.func
+            fname = (
+                f.id if isinstance(f, ast.Name) else f.attr if isinstance(f, ast.Attribute) else ""
+            )
+            out.add((fname, node.lineno))
+        elif isinstance(node, ast.ImportFrom):
+            out.update((a.name, node.lineno) for a in node.names)
+    return out
+
+
+def test_one_polygon_reader():
+    bad = []
+    for name, p in _modules():
+        if name in READER_HOMES:
+            continue
+        for fname, line in _called_names(ast.parse(p.read_text())):
+            if fname in READING:
+                bad.append(f"{name}:{line} {fname}")
+    assert not bad, sorted(bad)
+
+
+def test_the_reader_check_finds_calls():
+    found = _called_names(ast.parse("from x import as_array\nD.flatten(a)\npy_points(b)"))
+    assert {n for n, _ in found} == {"as_array", "flatten", "py_points"}
+
+
 def test_modules_and_functions_are_small():
     big = []
     for name, p in _modules():

@@ -21,7 +21,6 @@ from ._engine import options as _options
 from ._engine.coerce import is_shapely
 from ._engine.containers import apply, boxed, is_many
 from ._engine.reader import read
-from ._engine.status import nonfinite
 from ._types import ArrayLike2, Coordinate, GeometryLike, PolygonsLike, ProgressLike
 from .errors import (
     CoordinateTypeError,
@@ -37,10 +36,6 @@ def _is_real(v: Any) -> bool:
     return isinstance(v, (int, float, Fraction, np.integer, np.floating)) and not isinstance(
         v, (bool, np.bool_)
     )
-
-
-_OK = int(D.Status.OK)
-_NONFINITE = int(D.Status.NONFINITE)
 
 
 class Ragged:
@@ -103,54 +98,7 @@ class Ragged:
         """Build from a sequence of (n_k, 2) array-likes (or shapely geometries)."""
         if isinstance(polygons, Ragged):
             return polygons
-        if type(polygons) is list or type(polygons) is tuple:
-            # lists of (x, y) pairs of Python ints/floats, or of (n, 2) int64/float64
-            # arrays: one pass in the core
-            coords, offsets, _, status, member, vertex = core.flatten(polygons)
-            if status == _OK and len(coords) == offsets[-1]:
-                if not (np.diff(offsets) == 0).any():
-                    return cls(coords, offsets)
-            elif status == _NONFINITE:
-                raise nonfinite(f"{name}[{member}]", int(vertex))
-        if not hasattr(polygons, "__iter__") or isinstance(polygons, (str, bytes)):
-            raise ShapeError(
-                f"{name}: expected a sequence of polygons, got {type(polygons).__name__}",
-                argument=name,
-            )
-        arrs: list[np.ndarray] = []
-        for k, p in enumerate(polygons):
-            a: np.ndarray | None = (
-                p
-                if type(p) is np.ndarray
-                and p.ndim == 2
-                and p.dtype.kind in "if"
-                and p.dtype.itemsize <= 8
-                else None
-            )
-            if a is None or a.shape[1] != 2 or a.shape[0] == 0:
-                got, kind, _ = read(p, f"{name}[{k}]", numbers="int64")
-                if isinstance(got, list):
-                    raise ShapeError(
-                        f"{name}[{k}]: coordinates need exact Python numbers; "
-                        "use the single-pair minkowski_sum for these"
-                    )
-                a = got
-            arrs.append(a)
-        if not arrs:
-            return cls(np.empty((0, 2), np.int64), np.zeros(1, np.int64))
-        lengths = np.fromiter((len(a) for a in arrs), np.int64, len(arrs))
-        coords = np.concatenate(arrs)
-        if coords.dtype.kind == "f":
-            coords = coords.astype(np.float64, copy=False)
-            if not np.isfinite(coords).all():
-                row = int(np.flatnonzero(~np.isfinite(coords).all(axis=1))[0])
-                offsets = np.concatenate(([0], np.cumsum(lengths)))
-                k = int(np.searchsorted(offsets, row, side="right") - 1)
-                raise nonfinite(f"{name}[{k}]", int(row - offsets[k]), arrs[k])
-        elif coords.dtype.kind in "iu":
-            coords = coords.astype(np.int64, copy=False)
-        offsets = np.zeros(len(arrs) + 1, np.int64)
-        np.cumsum(lengths, out=offsets[1:])
+        coords, offsets = read(polygons, name, accept="many")
         return cls(coords, offsets)
 
     @classmethod

@@ -395,7 +395,7 @@ def _lineal(obj: Any, name: str) -> Any:
         obj = obj.to_list()
     if isinstance(obj, (list, tuple)) and obj and (is_shapely(obj[0]) or np.ndim(obj[0]) == 2):
         return _multiline([_lineal(item, f"{name}[{k}]") for k, item in enumerate(obj)])
-    c = read(obj, name, accept="line", numbers="float64")  # a polygon's number policy
+    c = read(obj, name, accept="coords", numbers="float64")  # a polygon's number policy
     return shapely.LineString(c) if len(c) >= 2 else shapely.LineString()
 
 

@@ -15,8 +15,10 @@ Options
     a ring as an (n, 2) array-like; gives :class:`Polygons`.
     ``"polygons"``: as ``"polygon"``, and a list of polygons (or a Ragged) is one set, the
     union of its members (:attr:`Polygons.parts`).
-    ``"line"``: a polyline's float64 coordinates (an (n, 2) ndarray, fewer than 2 rows
-    for an empty line).
+    ``"many"``: a batch of point sequences (a list of them): one (N, 2) int64 or float64
+    array and its offsets (N + 1), as a Ragged holds them.
+    ``"coords"``: an (n, 2) float64 ndarray of the coordinates as given, by the number
+    policy (a polyline, a ring kept as it is).
 ``numbers``
     ``"exact"``: ints, floats and Fractions at any magnitude, each on its path (the
     int64 and float64 kernels, or exact Python numbers: :class:`Operand`).
@@ -79,11 +81,11 @@ from .polygon import (
     rings_of,
     rings_of_array,
 )
-from .status import status_error
+from .status import nonfinite, status_error
 
 __all__ = ["ACCEPT", "NUMBERS", "DEGENERATE", "Operand", "Polygons", "read"]
 
-ACCEPT = ("points", "polygon", "polygons", "line")
+ACCEPT = ("points", "many", "polygon", "polygons", "coords")
 NUMBERS = ("exact", "int64", "core", "float64", "fractions", "round")
 DEGENERATE = ("refuse", "hull", "keep")
 #: ``validate="parts"``: each polygon valid, the parts of a MultiPolygon may overlap
@@ -207,7 +209,9 @@ def read(
             return op
         data, kind = as_array(obj, name)
         return Operand(data, kind, "py" if isinstance(data, list) else "i" if kind == INT else "f")
-    if accept == "line":
+    if accept == "many":
+        return _many(obj, name)
+    if accept == "coords":
         return _coords(obj, name, numbers, check_finite=True)[0]
     got = _polygonal(obj, name, numbers, accept == "polygons", degenerate)
     if validate:
@@ -361,6 +365,61 @@ def _from_points(pts: list, kind: str) -> Operand:
     if kind == INT and all(-INT_LIMIT < v < INT_LIMIT for p in pts for v in p):
         return Operand(np.array(pts, dtype=np.int64).reshape(-1, 2), INT, "i")
     return Operand(pts, kind, "py")
+
+
+def _many(polygons: Any, name: str) -> tuple[np.ndarray, np.ndarray]:
+    """A batch of point sequences as one (N, 2) int64 or float64 array and its offsets
+    (``accept="many"``: lists of pairs of Python ints/floats or (n, 2) int64/float64
+    arrays in one pass in the core, else each member read as ``numbers="int64"``)."""
+    if type(polygons) is list or type(polygons) is tuple:
+        # lists of (x, y) pairs of Python ints/floats, or of (n, 2) int64/float64
+        # arrays: one pass in the core
+        coords, offsets, _, status, member, vertex = core.flatten(polygons)
+        if status == Status.OK and len(coords) == offsets[-1]:
+            if not (np.diff(offsets) == 0).any():
+                return coords, offsets
+        elif status == Status.NONFINITE:
+            raise nonfinite(f"{name}[{member}]", int(vertex))
+    if not hasattr(polygons, "__iter__") or isinstance(polygons, (str, bytes)):
+        raise ShapeError(
+            f"{name}: expected a sequence of polygons, got {type(polygons).__name__}",
+            argument=name,
+        )
+    arrs: list[np.ndarray] = []
+    for k, p in enumerate(polygons):
+        a: np.ndarray | None = (
+            p
+            if type(p) is np.ndarray
+            and p.ndim == 2
+            and p.dtype.kind in "if"
+            and p.dtype.itemsize <= 8
+            else None
+        )
+        if a is None or a.shape[1] != 2 or a.shape[0] == 0:
+            got, kind = as_array(p, f"{name}[{k}]")
+            if isinstance(got, list):
+                raise ShapeError(
+                    f"{name}[{k}]: coordinates need exact Python numbers; "
+                    "use the single-pair minkowski_sum for these"
+                )
+            a = got
+        arrs.append(a)
+    if not arrs:
+        return np.empty((0, 2), np.int64), np.zeros(1, np.int64)
+    lengths = np.fromiter((len(a) for a in arrs), np.int64, len(arrs))
+    coords = np.concatenate(arrs)
+    if coords.dtype.kind == "f":
+        coords = coords.astype(np.float64, copy=False)
+        if not np.isfinite(coords).all():
+            row = int(np.flatnonzero(~np.isfinite(coords).all(axis=1))[0])
+            offsets = np.concatenate(([0], np.cumsum(lengths)))
+            k = int(np.searchsorted(offsets, row, side="right") - 1)
+            raise nonfinite(f"{name}[{k}]", int(row - offsets[k]), arrs[k])
+    elif coords.dtype.kind in "iu":
+        coords = coords.astype(np.int64, copy=False)
+    offsets = np.zeros(len(arrs) + 1, np.int64)
+    np.cumsum(lengths, out=offsets[1:])
+    return coords, offsets
 
 
 # --------------------------------------------------------------------------------------

@@ -661,8 +661,7 @@ def _polygon(p: Any, name: str) -> Any:
                 hint="give each connected part as its own Polygon",
             )
         return p
-    a = read(p, name, numbers="int64").data
-    rows = [(_float_value(x, name), _float_value(y, name)) for x, y in np.asarray(a).tolist()]
+    rows = read(p, name, accept="coords", numbers="float64")
     if len(rows) < 3:
         raise ShapeError(
             f"{name}: {len(rows)} vertices are not a polygon",

@@ -91,8 +91,7 @@ def _polygon(p: Any, name: str) -> Any:
 
     if p is None or is_shapely(p):
         return layout_polygon(p, name)
-    a = read(p, name, numbers="int64").data
-    poly = shapely.Polygon(np.asarray(a, dtype=np.float64))
+    poly = shapely.Polygon(read(p, name, accept="coords", numbers="round"))
     if not poly.is_valid or poly.area == 0:
         from ..general import convex_decomposition
 

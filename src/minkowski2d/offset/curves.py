@@ -12,13 +12,12 @@ import numpy as np
 from .._engine import core
 from .._engine import options as _options
 from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
-from .._engine.coerce import as_array, is_shapely
 from .._engine.containers import is_many
+from .._engine.reader import PARTS, read
 from .._engine.status import status_error
 from ..errors import (
     GeometryError,
     OverflowGeometryError,
-    ShapeError,
 )
 
 #: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
@@ -57,53 +56,29 @@ _HINT = "repair it: the boundary must not cross itself, holes must lie inside"
 _NONFINITE_HINT = "remove NaN and inf"
 
 
-def _validated(
-    xy: np.ndarray, ring_off: np.ndarray, poly_off: np.ndarray, name: str, unite: bool
-) -> _Input:
-    """Rings checked exactly by the core (the check of ``_polygon.check``: simple rings,
-    holes inside, no crossing; no GEOS). Parts of a collection that overlap are united
-    by the core before offsetting (``unite``; for a MultiPolygon, found by the same
-    check)."""
-    # status, reason, ring, vertex, orientation, disconnected
-    verdict: tuple[int, int, int, int, np.ndarray, np.ndarray]
-    verdict = core.check_polygons_f(xy, ring_off, poly_off, False)
-    if verdict[0]:
-        from .._engine.polygon import Rings, problem_error
-
-        raise problem_error(
-            *verdict[:4], Rings(xy, ring_off, poly_off), name, _HINT,
-            nonfinite_hint=_NONFINITE_HINT,
-        )  # fmt: skip
-    if not unite and len(poly_off) > 2 and core.check_polygons_f(xy, ring_off, poly_off, True)[0]:
-        unite = True  # a MultiPolygon whose valid parts overlap or share edges
-    if len(ring_off) == 2:
-        return _Input(xy, ring_off, _ZERO1, unite, 0.0)
-    hole = np.ones(len(ring_off) - 1, np.int64)
-    hole[poly_off[:-1]] = 0
-    return _Input(xy, ring_off, hole, unite, 0.0)
-
-
-def _shapely_input(geom: Any, name: str) -> _Input:
-    """A shapely ring, polygon, multipolygon or collection of them, validated."""
-    from .._engine.polygon import polygon_arrays, polygon_parts
-
-    got = polygon_parts(geom, name, hint="pass the polygons only")
-    if got is None:
-        raise ShapeError(
-            f"{name}: cannot offset a {geom.geom_type} here (give a polygon, a ring or an "
-            "(n, 2) array)",
-            argument=name,
-            hint="pass the coordinates as an (n, 2) array for a point or a segment",
-        )
-    xy, ro, po, _ = polygon_arrays(got.parts)
-    return _validated(xy, ro, po, name, got.collection and len(got.parts) > 1)
-
-
 #: constant arrays of the single-polygon call
 _ZERO1 = np.zeros(1, np.int64)
 _ZEROF1 = np.zeros(1, np.float64)
 _GEOM1 = np.array([0, 1], np.int64)
-_POLYGON = 3  # shapely.GeometryType.POLYGON
+
+
+def _read(obj: Any, name: str) -> _Input:
+    """The rings of a polygon through the one reader (any orientation: the core orients
+    them exactly; exact values rounded to float64 once, the rounding bounded), or the
+    hull of a point, a segment or collinear points; the parts of a collection, or of a
+    MultiPolygon whose valid parts overlap, are united by the core first."""
+    got = read(
+        obj, name, accept="polygon", numbers="round", validate=PARTS, degenerate="hull",
+        hint=_HINT, nonfinite_hint=_NONFINITE_HINT,
+    )  # fmt: skip
+    if got.flat is not None:
+        return _one_ring(got.flat, got.delta)
+    xy, ro, po = got.rings
+    if len(ro) == 2:
+        return _Input(np.ascontiguousarray(xy, np.float64), ro, _ZERO1, got.overlap, got.delta)
+    hole = np.ones(len(ro) - 1, np.int64)
+    hole[po[:-1]] = 0
+    return _Input(xy, ro, hole, got.overlap, got.delta)
 
 
 def _one_ring(data: np.ndarray, delta: float) -> _Input:
@@ -114,63 +89,6 @@ def _one_ring(data: np.ndarray, delta: float) -> _Input:
         False,
         delta,
     )
-
-
-def _rounding_error(exact: list, data: np.ndarray) -> float:
-    """An upper bound on the distance between each exact vertex and its float64 value."""
-    worst = Fraction(0)
-    for (x, y), (fx, fy) in zip(exact, data.tolist()):
-        worst = max(worst, abs(Fraction(x) - Fraction(fx)), abs(Fraction(y) - Fraction(fy)))
-    # sqrt(2) < 1.5, and float() of a Fraction rounds to nearest
-    return float(worst) * 1.5
-
-
-def _read(obj: Any, name: str) -> _Input:
-    """The rings of a polygon (any orientation: the core orients them exactly), or a ring
-    of one or two vertices for a point or a segment."""
-    import shapely
-
-    if is_shapely(obj):
-        if obj.geom_type in ("Point", "LineString", "MultiPoint"):
-            obj = shapely.get_coordinates(obj)
-        else:
-            return _shapely_input(obj, name)
-    data: np.ndarray | list | None
-    data, _kind = as_array(obj, name)
-    delta = 0.0
-    if isinstance(data, list):  # Fractions or huge ints: rounded to float64 once
-        exact = data
-        try:
-            data = np.array([(float(Fraction(x)), float(Fraction(y))) for x, y in data])
-        except OverflowError:
-            data = None
-        if data is None or not np.isfinite(data).all():
-            raise OverflowGeometryError(
-                f"{name}: a coordinate does not fit in float64",
-                argument=name,
-                hint="scale the input down",
-            )
-        delta = _rounding_error(exact, data)
-    data = np.asarray(data, dtype=np.float64)
-    if len(data) > 1 and (data[0] == data[-1]).all():
-        data = data[:-1]
-    finite = np.isfinite(data).all(axis=1)
-    if not finite.all():
-        k = int(np.flatnonzero(~finite)[0])
-        raise status_error(core.Status.NONFINITE, k, name, data, hint=_NONFINITE_HINT)
-    from .._engine.polygon import is_flat, probe, rings_of_array
-
-    rings = rings_of_array(data)
-    if len(data) >= 3:
-        status, reason = probe(rings)[:2]
-        if status == core.Status.OK:
-            return _one_ring(data, delta)  # the common case: a valid ring (exact check)
-        if not is_flat(status, reason):
-            _validated(*rings, name, False)  # raises the core's verdict
-    # a point, a segment, or collinear points: a degenerate convex set
-    from .._engine import dispatch as D
-
-    return _one_ring(np.asarray(D.hull(data, "points"), dtype=np.float64), delta)
 
 
 # --------------------------------------------------------------------------------------
