@@ -349,13 +349,15 @@ class _Geo:
         sf = float(s)
         S = sf * sf
         big = self.big[a] | self.big[b] | self.big[c] | (sf > _CAP)
-        t1 = _sign(wx * wx + wy * wy - S, Awx * Awx + Awy * Awy + S, big)
-        t2 = _sign(vx * vx + vy * vy - S, Avx * Avx + Avy * Avy + S, big)
-        dot, Ad = wx * ex + wy * ey, Awx * Aex + Awy * Aey
-        ee, Aee = ex * ex + ey * ey, Aex * Aex + Aey * Aey
-        cr, Acr = ex * wy - ey * wx, Aex * Awy + Aey * Awx
-        t3 = _sign(dot - ee, Ad + Aee, big)
-        t4 = _sign(cr * cr - S * ee, Acr * Acr + S * Aee, big)
+        # where ``big`` holds the products may overflow: _sign answers 0 there (exact below)
+        with np.errstate(over="ignore", invalid="ignore"):
+            t1 = _sign(wx * wx + wy * wy - S, Awx * Awx + Awy * Awy + S, big)
+            t2 = _sign(vx * vx + vy * vy - S, Avx * Avx + Avy * Avy + S, big)
+            dot, Ad = wx * ex + wy * ey, Awx * Aex + Awy * Aey
+            ee, Aee = ex * ex + ey * ey, Aex * Aex + Aey * Aey
+            cr, Acr = ex * wy - ey * wx, Aex * Awy + Aey * Awx
+            t3 = _sign(dot - ee, Ad + Aee, big)
+            t4 = _sign(cr * cr - S * ee, Acr * Acr + S * Aee, big)
         # Kleene logic on +1 (true) / -1 (false) / 0 (the filter cannot tell)
         ok = np.minimum(np.minimum(t1, t2), np.maximum(np.maximum(-_sign(dot, Ad, big), t3), t4))
         Si = (s * self.unit) ** 2
