@@ -292,9 +292,12 @@ class _Geo:
         """Exact signs of ``orient(p, q, r)`` for arrays of vertex ids."""
         H = self.hi
         px, py, qx, qy, rx, ry = H[p, 0], H[p, 1], H[q, 0], H[q, 1], H[r, 0], H[r, 1]
-        v = (qx - px) * (ry - py) - (qy - py) * (rx - px)
-        a = (abs(qx) + abs(px)) * (abs(ry) + abs(py)) + (abs(qy) + abs(py)) * (abs(rx) + abs(px))
-        s = _sign(v, a, self.big[p] | self.big[q] | self.big[r])
+        with np.errstate(over="ignore", invalid="ignore"):  # big entries: 0, exact below
+            v = (qx - px) * (ry - py) - (qy - py) * (rx - px)
+            a = (abs(qx) + abs(px)) * (abs(ry) + abs(py)) + (abs(qy) + abs(py)) * (
+                abs(rx) + abs(px)
+            )
+            s = _sign(v, a, self.big[p] | self.big[q] | self.big[r])
         for k in np.flatnonzero(s == 0).tolist():
             s[k] = _i_orient(self.iv(int(p[k])), self.iv(int(q[k])), self.iv(int(r[k])))
         return s
@@ -331,10 +334,13 @@ class _Geo:
         H = self.hi
         px, py, qx, qy = H[p, 0], H[p, 1], H[q, 0], H[q, 1]
         rx, ry = pf
-        v = (qx - px) * (ry - py) - (qy - py) * (rx - px)
-        a = (abs(qx) + abs(px)) * (abs(ry) + abs(py)) + (abs(qy) + abs(py)) * (abs(rx) + abs(px))
         big = self.big[p] | self.big[q] | (max(abs(rx), abs(ry)) > _CAP)
-        s = _sign(v, a, big)
+        with np.errstate(over="ignore", invalid="ignore"):  # big entries: 0, exact below
+            v = (qx - px) * (ry - py) - (qy - py) * (rx - px)
+            a = (abs(qx) + abs(px)) * (abs(ry) + abs(py)) + (abs(qy) + abs(py)) * (
+                abs(rx) + abs(px)
+            )
+            s = _sign(v, a, big)
         for k in np.flatnonzero(s == 0).tolist():
             s[k] = _i_orient(self.iv(int(p[k])), self.iv(int(q[k])), P)
         return s
