@@ -75,6 +75,7 @@
 #include "exactnum.hpp"
 #include "minkowski.hpp"
 #include "offset_curve.hpp"
+#include "offset_prune.hpp"
 #include "overlay.hpp"
 
 namespace mk {
@@ -171,10 +172,37 @@ class Offsetter {
       sc.push_back(std::move(sv));
     }
     if (!set_tolerances(p, grow, want_labels, least, mu, e0, sc, s, res)) return;
-    // the curves
-    const int w = grow ? 1 : -1;
+    // the curves, pruned (round joins), one simple curve taken as it is, else the overlay;
+    // a pruned result must pass the check of its lower bound, else it is computed again
+    // unpruned
+    const bool prune = p.join == ROUND && !want_labels;
+    if (!curves(sc, s, want_labels, prune, res)) return;
+    if (pruned_ && !covers(res.rings, sc, s.r_check)) {
+      res.rings.clear();
+      if (!curves(sc, s, want_labels, false, res)) return;
+    }
+    finish(e0, want_labels, res);
+  }
+
+ private:
+  Pruner pruner_;
+  bool pruned_ = false;
+  std::vector<const std::vector<Pt>*> ring_;
+  std::vector<std::pair<i64, i64>> cross_;
+  CrossScratch cscr_;
+  BoxScratch boxes_;
+  std::vector<Pt> ca_, cb_;
+  std::vector<int> cg_;
+  std::vector<double> cbox_;
+
+  // Builds the curves of the rings sc (pruned when asked) and their region in
+  // res.rings; false (res.code set) when a piece fails its certificate.
+  bool curves(const std::vector<std::vector<Pt>>& sc, const Setup& s, bool want_labels,
+              bool prune, Result& res) {
     i64 base = 0;
     std::size_t nc = 0;
+    pruned_ = false;
+    ring_.clear();
     for (const std::vector<Pt>& sv : sc) {
       if (sv.empty()) continue;
       if (curves_.size() <= nc) curves_.emplace_back();
@@ -182,8 +210,9 @@ class Offsetter {
       cv.build(sv, s, base);
       if (!cv.certified) {
         res.code = UNCERTIFIED;
-        return;
+        return false;
       }
+      ring_.push_back(&sv);
       if (want_labels) {
         for (const Pt& q : sv) {
           res.used_xy.push_back(q.x);
@@ -193,29 +222,136 @@ class Offsetter {
       }
       base += (i64)sv.size();
     }
-    // one simple curve: it is the boundary (no overlay)
-    if (nc == 1 && simple(curves_[0].pts)) {
-      direct(curves_[0], grow, want_labels, res);
-    } else {
-      ov::Geo g;
-      std::vector<ov::EdgeIn> in;
-      std::vector<i64> line_label;
-      for (std::size_t k = 0; k < nc; ++k) add_curve(g, curves_[k].pts, curves_[k].lab, w, in, line_label);
-      ov::Overlay o(g);
-      o.run(in, ov::UNION, res.rings);
-      if (want_labels) {
-        // the lines of the output edges, unless the overlay had to re-node its rounded
-        // rings (then they are unknown: DETOUR, and offset_arcs labels by distances)
-        const std::size_t nv = res.rings.xy.size() / 2;
-        res.labels.assign(nv, DETOUR);
-        if (res.rings.line.size() == nv)
-          for (std::size_t k = 0; k < nv; ++k) res.labels[k] = line_label[res.rings.line[k]];
+    // crossings: a single curve without any is the boundary; swallowed loops pruned
+    bool one_simple = false;
+    for (std::size_t k = 0; k < nc && (prune || nc == 1); ++k) {
+      Curve& cv = curves_[k];
+      const bool clean = curve_crossings(cv.pts, cross_, cscr_, true);
+      one_simple = clean && cross_.empty();
+      if (one_simple || !prune) continue;
+      // the local pass, then the crossings that remain, and the cuts they allow
+      bool pr = pruner_.run(cv, *ring_[k], s, nullptr);
+      one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
+      if (!one_simple && pruner_.run(cv, *ring_[k], s, &cross_)) {
+        pr = true;
+        one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
       }
+      pruned_ = pruned_ || pr;
     }
-    finish(e0, want_labels, res);
+    if (nc == 1 && one_simple) {
+      direct(curves_[0], s.grow, want_labels, res);
+      return true;
+    }
+    ov::Geo g;
+    std::vector<ov::EdgeIn> in;
+    std::vector<i64> line_label;
+    const int w = s.grow ? 1 : -1;
+    for (std::size_t k = 0; k < nc; ++k)
+      add_curve(g, curves_[k].pts, curves_[k].lab, w, in, line_label);
+    ov::Overlay o(g);
+    o.run(in, ov::UNION, res.rings);
+    if (want_labels) {
+      // the lines of the output edges, unless the overlay had to re-node its rounded
+      // rings (then they are unknown: DETOUR, and offset_arcs labels by distances)
+      const std::size_t nv = res.rings.xy.size() / 2;
+      res.labels.assign(nv, DETOUR);
+      if (res.rings.line.size() == nv)
+        for (std::size_t k = 0; k < nv; ++k) res.labels[k] = line_label[res.rings.line[k]];
+    }
+    return true;
   }
 
- private:
+  // Is every edge of the result R (scaled) at distance >= t from the rings sc? Exact:
+  // segment pairs whose boxes come within t, then orientations and distances.
+  bool covers(const ov::Rings& R, const std::vector<std::vector<Pt>>& sc, double t) {
+    if (R.status != OK) return true;  // an error is reported as it is
+    std::vector<Pt> &a = ca_, &b = cb_;
+    std::vector<int>& grp = cg_;
+    a.clear();
+    b.clear();
+    grp.clear();
+    for (std::size_t k = 0; k + 1 < R.ring_off.size(); ++k) {
+      const i64 r0 = R.ring_off[k], r1 = R.ring_off[k + 1];
+      for (i64 i = r0; i < r1; ++i) {
+        const i64 j = i + 1 < r1 ? i + 1 : r0;
+        a.push_back(Pt{R.xy[2 * i], R.xy[2 * i + 1]});
+        b.push_back(Pt{R.xy[2 * j], R.xy[2 * j + 1]});
+        grp.push_back(0);
+      }
+    }
+    for (const auto& v : sc)
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        a.push_back(v[i]);
+        b.push_back(v[(i + 1) % v.size()]);
+        grp.push_back(1);
+      }
+    const i64 n = (i64)a.size();
+    cbox_.resize(4 * (std::size_t)n);
+    double *x0 = cbox_.data(), *x1 = x0 + n, *y0 = x1 + n, *y1 = y0 + n;
+    for (i64 i = 0; i < n; ++i) {
+      // output edges widened by t (and more than the rounding of the widening)
+      const double M = std::max({std::fabs(a[i].x), std::fabs(a[i].y), std::fabs(b[i].x),
+                                 std::fabs(b[i].y)});
+      const double w = grp[i] == 0 ? t * (1 + 0x1p-40) + span_slack(M) : 0.0;
+      x0[i] = std::min(a[i].x, b[i].x) - w;
+      x1[i] = std::max(a[i].x, b[i].x) + w;
+      y0[i] = std::min(a[i].y, b[i].y) - w;
+      y1[i] = std::max(a[i].y, b[i].y) + w;
+    }
+    bool ok = true;
+    box_pairs_grouped(n, x0, x1, y0, y1, grp.data(), 2, boxes_, [&](i64 i, i64 j) {
+      ok = far_apart(a[i], b[i], a[j], b[j], t);
+      return ok;
+    });
+    return ok;
+  }
+
+  // Are the segments pq and cd at distance >= t (exactly)? First in double: with every
+  // coordinate below 2 in magnitude (the scaled problem) a squared point-segment distance
+  // computed as in seg_d2 is within 2^-44 of the exact one (the differences and products
+  // are below 64, a few roundings each; a projection outside its segment taken as inside
+  // or the reverse changes it by the square of the rounding of the dot product, far
+  // less), so a float distance at least t^2 + 2^-40 away decides, once the segments are
+  // known not to meet (their boxes apart, or the orientations).
+  static bool far_apart(Pt p, Pt q, Pt c, Pt d, double t) {
+    const double big = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y),
+                                 std::fabs(c.x), std::fabs(c.y), std::fabs(d.x), std::fabs(d.y)});
+    if (big < 2 && t < 2) {
+      const double d2 = std::min(std::min(seg_d2(c, d, p), seg_d2(c, d, q)),
+                                 std::min(seg_d2(p, q, c), seg_d2(p, q, d)));
+      if (d2 >= t * t + 0x1p-40) {
+        const bool apart = std::max(p.x, q.x) < std::min(c.x, d.x) ||
+                           std::max(c.x, d.x) < std::min(p.x, q.x) ||
+                           std::max(p.y, q.y) < std::min(c.y, d.y) ||
+                           std::max(c.y, d.y) < std::min(p.y, q.y);
+        if (apart || !cross_properly(p, q, c, d)) return true;
+      }
+    }
+    return far_apart_exact(p, q, c, d, t);
+  }
+
+  static double seg_d2(Pt a, Pt b, Pt p) {
+    const double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+    const double dot = px * dx + py * dy;
+    if (dot <= 0) return px * px + py * py;
+    const double L = dx * dx + dy * dy;
+    if (dot >= L) {
+      const double qx = p.x - b.x, qy = p.y - b.y;
+      return qx * qx + qy * qy;
+    }
+    const double cr = px * dy - py * dx;
+    return cr * cr / L;
+  }
+
+  static bool far_apart_exact(Pt p, Pt q, Pt c, Pt d, double t) {
+    const int o1 = orient(p, q, c), o2 = orient(p, q, d), o3 = orient(c, d, p),
+              o4 = orient(c, d, q);
+    if (o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0))
+      return false;  // they cross or touch
+    return seg_dist_cmp(c, d, p, t) >= 0 && seg_dist_cmp(c, d, q, t) >= 0 &&
+           seg_dist_cmp(p, q, c, t) >= 0 && seg_dist_cmp(p, q, d, t) >= 0;
+  }
+
   // The polygon itself, regularized: the overlay of its rings (distance 0).
   static void regularized(const std::vector<std::vector<Pt>>& rings, Result& res) {
     ov::Geo g;
@@ -291,6 +427,8 @@ class Offsetter {
         s.phimax = std::min(2 * std::acos(ct / s.rho), M_PI);
         s.eta = 2 * s.mc / s.rho;
       }
+      // the lower radius plus delta: t_cov - m >= r_lo + mu - m >= r_lo + delta
+      s.r_check = up(s.t_cov - 0x1p-50);
     } else {
       s.circ = true;
       s.rho = s.r;
@@ -299,46 +437,6 @@ class Offsetter {
   }
 
   std::vector<Curve> curves_;
-
-  // Is the closed polyline p simple (no two segments meet but consecutive ones at their
-  // common end, no segment of length zero)? Exact: boxes, then orientations.
-  static bool simple(const std::vector<Pt>& p) {
-    const i64 n = (i64)p.size();
-    if (n < 3) return false;
-    std::vector<double> x0(n), x1(n), y0(n), y1(n);
-    for (i64 i = 0; i < n; ++i) {
-      const Pt &a = p[i], &b = p[(i + 1) % n];
-      if (a.x == b.x && a.y == b.y) return false;
-      x0[i] = std::min(a.x, b.x);
-      x1[i] = std::max(a.x, b.x);
-      y0[i] = std::min(a.y, b.y);
-      y1[i] = std::max(a.y, b.y);
-    }
-    bool ok = true;
-    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 i, i64 j) {
-      if (!ok) return;
-      const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
-      if (j == i + 1 || (i == 0 && j == n - 1)) {
-        // consecutive: they must not fold back onto each other
-        const Pt &u = j == i + 1 ? a : c, &m = j == i + 1 ? b : d, &z = j == i + 1 ? d : b;
-        if (orient(u, m, z) == 0 && dot_sign(u, m, m, z) < 0) ok = false;
-        return;
-      }
-      int o1 = orient(a, b, c), o2 = orient(a, b, d);
-      if (o1 * o2 > 0) return;
-      int o3 = orient(c, d, a), o4 = orient(c, d, b);
-      if (o3 * o4 > 0) return;
-      if (o1 == 0 && o2 == 0) {
-        // collinear: they meet when their extents along the line overlap
-        auto key = [&](const Pt& q) { return a.x != b.x ? q.x : q.y; };
-        double s0 = std::min(key(a), key(b)), s1 = std::max(key(a), key(b));
-        double t0 = std::min(key(c), key(d)), t1 = std::max(key(c), key(d));
-        if (t0 > s1 || s0 > t1) return;
-      }
-      ok = false;
-    });
-    return ok;
-  }
 
   // The region of one simple curve: its inside when it turns the way the rule selects
   // (counter-clockwise for a grow, clockwise for a shrink, whose curve has weight -1),

@@ -1,0 +1,569 @@
+// offset_prune.hpp -- swallowed loops cut out of an offset curve before the overlay (see
+// offset.hpp, which includes it; include that).
+//
+// Where the offset closes a slot, rounds a concave corner tighter than the radius or
+// merges the arcs of close convex vertices, the curve of offset.hpp runs in loops that
+// lie inside the result: the moved edges of a concave run cross in a swallowtail, the
+// detours of its reflex vertices reach back to the polygon, and the arcs of two convex
+// vertices closer than 2r overlap for most of their length. The exact overlay would
+// node every crossing of them. Pruning cuts such a loop at the crossing X of the two
+// curve segments A and B that bound it and joins A to B at X (as the trims of
+// offset_curve.hpp do for one reflex vertex), in one pass over the curve with a stack.
+//
+// Pieces. With the anchors of Curve (point k attached to ring vertex anc[k]), the piece
+// of segment p -> q is the polygon anc(p), p, q, anc(q) closed along the ring back to
+// anc(p), and curve = boundary of P + the sum of the pieces' boundaries (chains that
+// telescope, as in offset.hpp). A cut at X replaces the pieces of A, of every segment
+// between A and B and of B by two: A's piece up to X (anchors of A) and the piece of the
+// new segment X -> end of B, whose ring path runs from A's end anchor to B's. The chain
+// identity holds again, so the region of the new curve is P plus the new pieces
+// (grow; a shrink removes them). Each new piece is certified exactly before the cut is
+// made: it must be a simple counter-clockwise polygon within t_up of the polygon, shown
+// by a point O (the float centroid of its vertices) such that every triangle O, g_m,
+// g_{m+1} turns counter-clockwise, the polygon turns once around O (so it is star-shaped
+// from O, hence simple), and the three corners of every triangle lie within t_up of one
+// convex feature of the ring (an edge, or a vertex and so its two edges): g_m and
+// g_{m+1} are known to (the features kept with each point and segment), O is checked.
+// X itself is a double right of both segments (outwards: the region only grows by the
+// sliver) checked within t_up of both segments' features. So the pruned result still
+// lies within t_up of the polygon: the upper half of the guarantee holds by
+// construction.
+//
+// The lower half (the result covers the band of width t_cov) is not local any more: the
+// removed pieces covered parts of it. It is verified on the result (Offsetter::covers):
+// every output edge at distance >= r_lo + delta from the polygon (exact), which with the
+// polygon inside the result (grow; outside it for a shrink) puts every point within
+// r_lo of the polygon in the result: a point of the band outside it would see the
+// result's boundary on the segment to its nearest point of the polygon, nearer than
+// r_lo. When the check fails the offset is computed again without pruning; no
+// heuristic decides a result.
+//
+// Which loops: segments are taken in order from a point of the curve's convex hull (on
+// the result's outer boundary, so never inside a loop); a segment that crosses segments
+// still on the stack is cut at the deepest crossing whose certificate holds (a few tried,
+// ring paths up to PRUNE_PATH edges), which removes the largest loop. Crossings that
+// remain (the curve closing a hole, two rings meeting) are the overlay's.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "boxes.hpp"
+#include "exact.hpp"
+
+namespace mk {
+namespace off {
+
+// the longest ring path of a new piece, and the cuts tried per segment
+constexpr i64 PRUNE_PATH = 256;
+constexpr int PRUNE_TRIES = 4;
+constexpr i64 PRUNE_WINDOW = 24;  // the local pass: stack segments tested per segment
+constexpr i64 PRUNE_EARS = 128;  // ear clipping: pieces of at most this many points
+
+// p within t of the feature f of the ring v (a vertex or a closed edge: convex sets)
+inline bool near_feature(const std::vector<Pt>& v, i64 f, Pt p, double t) {
+  const i64 n = (i64)v.size(), j = f >> 1;
+  if (f & 1) return dist_cmp(v[j], p, t) <= 0;
+  return seg_dist_cmp(v[j], v[(j + 1) % n], p, t) <= 0;
+}
+
+// Does feature k lie in edge feature e (k == e, or k is an end vertex of e)?
+inline bool feature_in(i64 k, i64 e, i64 n) {
+  if (k == e) return true;
+  if (!(k & 1)) return false;
+  const i64 j = k >> 1, ej = e >> 1;
+  return j == ej || j == (ej + 1) % n;
+}
+
+// Do the segments ab and cd cross properly (one point inside both, exactly)?
+inline bool cross_properly(Pt a, Pt b, Pt c, Pt d) {
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d);
+  if (o1 * o2 >= 0) return false;
+  const int o3 = orient(c, d, a), o4 = orient(c, d, b);
+  return o3 * o4 < 0;
+}
+
+class Pruner {
+ public:
+  // Cuts the swallowed loops of cv (a curve of the ring v with its bookkeeping); true
+  // when it cut any. crossings: the proper crossings of cv's segments (pairs i < j).
+  // crossings null: the local pass (each segment against the last PRUNE_WINDOW segments
+  // of the stack whose boxes meet its own).
+  bool run(Curve& cv, const std::vector<Pt>& v, const Setup& s,
+           const std::vector<std::pair<i64, i64>>* crossings) {
+    const i64 m = (i64)cv.pts.size(), n = (i64)v.size();
+    if (m < 4 || n < 3 || s.join != ROUND || (crossings && crossings->empty())) return false;
+    v_ = &v;
+    t_up_ = s.t_up;
+    n_ = n;
+    local_ = crossings == nullptr;
+    if (!local_) partners(m, *crossings);
+    const i64 s0 = local_ ? hull_point(cv.pts) : far_start(m, *crossings);
+    where_.assign(m, -1);
+    Q_.clear();
+    qa_.clear();
+    qpf_.clear();
+    qsf_.clear();
+    qorig_.clear();
+    push_point(cv.pts[s0], cv.anc[s0], cv.pf[s0]);
+    bool cut = false;
+    for (i64 t = 0; t < m; ++t) {
+      const i64 k = (s0 + t) % m, k1 = (k + 1) % m;
+      // anchors unwrapped: they grow by 0 or 1 per segment of the curve
+      const i64 ue = qa_.back() + (((cv.anc[k1] - cv.anc[k]) % n) + n) % n;
+      start_segment(k, cv.sf[k]);
+      for (int tries = PRUNE_TRIES; tries > 0 && candidates(k, cv.pts[k1]);)
+        if (try_cuts(k, cv.pts[k1], ue, cv.pf[k1], cv.sf[k], tries)) {
+          cut = true;
+        } else {
+          break;
+        }
+      push_point(cv.pts[k1], ue, cv.pf[k1]);
+    }
+    if (!cut) return false;
+    // the last point is the start again
+    Q_.pop_back();
+    qa_.pop_back();
+    qpf_.pop_back();
+    cv.pts = Q_;
+    cv.anc.resize(Q_.size());
+    for (std::size_t i = 0; i < Q_.size(); ++i) cv.anc[i] = qa_[i] % n;
+    cv.pf = qpf_;
+    cv.sf.assign(qsf_.begin(), qsf_.begin() + (i64)Q_.size());
+    cv.lab.assign(Q_.size(), DETOUR);  // labels are for offset_arcs, which does not prune
+    return true;
+  }
+
+ private:
+  // The least (x, y) point: on the curve's hull, so on the outer boundary of a grow.
+  static i64 hull_point(const std::vector<Pt>& p) {
+    i64 s0 = 0;
+    for (i64 k = 1; k < (i64)p.size(); ++k)
+      if (p[k].x < p[s0].x || (p[k].x == p[s0].x && p[k].y < p[s0].y)) s0 = k;
+    return s0;
+  }
+
+  // The middle of the longest run of segments without a crossing (a loop seldom spans
+  // it, so a cut seldom has to wrap around the start).
+  i64 far_start(i64 m, const std::vector<std::pair<i64, i64>>& crossings) {
+    fill_.clear();
+    for (auto& c : crossings) {
+      fill_.push_back(c.first);
+      fill_.push_back(c.second);
+    }
+    std::sort(fill_.begin(), fill_.end());
+    i64 best = -1, at = 0;
+    for (std::size_t q = 0; q < fill_.size(); ++q) {
+      const i64 a = fill_[q], b = q + 1 < fill_.size() ? fill_[q + 1] : fill_[0] + m;
+      if (b - a > best) {
+        best = b - a;
+        at = (a + (b - a) / 2 + 1) % m;
+      }
+    }
+    return at;
+  }
+
+  // crossing partners per segment (CSR)
+  void partners(i64 m, const std::vector<std::pair<i64, i64>>& crossings) {
+    part_off_.assign(m + 1, 0);
+    for (auto& c : crossings) {
+      ++part_off_[c.first + 1];
+      ++part_off_[c.second + 1];
+    }
+    for (i64 k = 0; k < m; ++k) part_off_[k + 1] += part_off_[k];
+    part_.resize(part_off_[m]);
+    fill_.assign(part_off_.begin(), part_off_.end() - 1);
+    for (auto& c : crossings) {
+      part_[fill_[c.first]++] = c.second;
+      part_[fill_[c.second]++] = c.first;
+    }
+  }
+
+  const std::vector<Pt>* v_ = nullptr;
+  bool local_ = false;
+  double t_up_ = 0;
+  i64 n_ = 0;
+  std::vector<i64> part_off_, part_, fill_, where_, cand_;
+  // the stack: points, their anchors (unwrapped: ring vertex anchor mod n) and features;
+  // segment e runs Q_[e] -> Q_[e + 1]
+  std::vector<Pt> Q_;
+  std::vector<i64> qa_, qpf_, qsf_, qorig_;
+  // scratch of the certificates
+  std::vector<Pt> g_;
+  std::vector<i64> gf_, gr_, gp_, nx_, pv_;
+  void push_point(Pt p, i64 a, i64 f) {
+    Q_.push_back(p);
+    qa_.push_back(a);
+    qpf_.push_back(f);
+  }
+  void start_segment(i64 k, i64 f) {
+    const std::size_t e = Q_.size() - 1;
+    qsf_.resize(e + 1);
+    qorig_.resize(e + 1);
+    qsf_[e] = f;
+    qorig_[e] = k;
+    where_[k] = (i64)e;
+  }
+
+  // The stack positions of k's alive crossing partners, the most recent first, in cand_
+  // (false: none).
+  bool candidates(i64 k, Pt end) {
+    cand_.clear();
+    const i64 top = (i64)Q_.size() - 1;
+    if (local_) {
+      const Pt c = Q_[top];
+      const double x0 = std::min(c.x, end.x), x1 = std::max(c.x, end.x),
+                   y0 = std::min(c.y, end.y), y1 = std::max(c.y, end.y);
+      for (i64 e = top - 2; e >= 0 && e >= top - PRUNE_WINDOW; --e) {
+        const Pt &a = Q_[e], &b = Q_[e + 1];
+        if (std::max(a.x, b.x) < x0 || std::min(a.x, b.x) > x1 || std::max(a.y, b.y) < y0 ||
+            std::min(a.y, b.y) > y1)
+          continue;
+        cand_.push_back(e);
+      }
+      return !cand_.empty();
+    }
+    for (i64 q = part_off_[k]; q < part_off_[k + 1]; ++q) {
+      const i64 e = where_[part_[q]];
+      if (e >= 0 && e < top && qorig_[e] == part_[q]) cand_.push_back(e);
+    }
+    std::sort(cand_.begin(), cand_.end(), [](i64 a, i64 b) { return a > b; });
+    return !cand_.empty();
+  }
+
+  // Cuts the current segment (Q_.back() -> end, segment k) at its crossing with the
+  // deepest stack segment whose certificate holds; true when cut.
+  bool try_cuts(i64 k, Pt end, i64 end_anc, i64 end_pf, i64 fb, int& tries) {
+    const i64 top = (i64)Q_.size() - 1;
+    for (i64 e : cand_) {
+      if (tries <= 0) break;
+      const Pt a = Q_[e], b = Q_[e + 1], c = Q_[top];
+      if (!cross_properly(a, b, c, end)) continue;
+      --tries;
+      Pt X;
+      if (!crossing_point(a, b, c, end, X)) continue;
+      const i64 fa = qsf_[e];
+      if (!near_feature(*v_, fa, X, t_up_) || !near_feature(*v_, fb, X, t_up_)) continue;
+      const i64 ea = qa_[e + 1];  // A's end anchor: X's anchor
+      // A up to X: anchors of A
+      if (!piece_ok(qa_[e], a, qpf_[e], X, fa, ea, fa)) continue;
+      // the new segment X -> end, from A's end anchor to B's
+      if (!piece_ok(ea, X, fa, end, fb, end_anc, end_pf)) continue;
+      // cut: drop the stack above A, X on top with the current segment from it
+      for (i64 q = e + 1; q <= top; ++q) where_[qorig_[q]] = -1;
+      Q_.resize(e + 1);
+      qa_.resize(e + 1);
+      qpf_.resize(e + 1);
+      push_point(X, ea, fa);
+      start_segment(k, fb);
+      return true;
+    }
+    return false;
+  }
+
+  // X: a double right of (or on) both lines ab and cd, near their crossing (false when
+  // none is found within a few steps outwards)
+  static bool crossing_point(Pt a, Pt b, Pt c, Pt d, Pt& X) {
+    using LD = long double;
+    const LD ux = (LD)b.x - a.x, uy = (LD)b.y - a.y, wx = (LD)d.x - c.x, wy = (LD)d.y - c.y;
+    const LD den = ux * wy - uy * wx;
+    if (den == 0) return false;
+    const LD t = (((LD)c.x - a.x) * wy - ((LD)c.y - a.y) * wx) / den;
+    const Pt X0{(double)(a.x + t * ux), (double)(a.y + t * uy)};
+    if (!(X0.x - X0.x == 0) || !(X0.y - X0.y == 0)) return false;
+    // outwards: along the sum of the right normals of the two directions
+    const double lu = std::hypot((double)ux, (double)uy), lw = std::hypot((double)wx, (double)wy);
+    const double nx = (double)uy / lu + (double)wy / lw, ny = -(double)ux / lu - (double)wx / lw;
+    const double nn = std::hypot(nx, ny);
+    double step = std::max(std::fabs(X0.x), std::fabs(X0.y)) * 0x1p-50 + 0x1p-1060;
+    for (int i = 0; i < 40; ++i, step *= 2) {
+      const Pt c2 = i == 0 || !(nn > 0) ? X0 : Pt{X0.x + step * nx / nn, X0.y + step * ny / nn};
+      if (orient(a, b, c2) <= 0 && orient(c, d, c2) <= 0) {
+        X = c2;
+        return true;
+      }
+      if (!(nn > 0)) return false;
+    }
+    return false;
+  }
+
+  // Is the piece of the segment p -> q (anchors ap, aq; p within t_up of its feature fp
+  // which contains ap, the segment of fs, q of fq which contains aq) a chain of
+  // counter-clockwise triangles within t_up of the ring? See the header.
+  bool piece_ok(i64 ap, Pt p, i64 fp, Pt q, i64 fs, i64 aq, i64 fq) {
+    const std::vector<Pt>& v = *v_;
+    const i64 len = aq - ap;  // anchors unwrapped: a path once around the ring is refused
+    if (len < 0 || len > PRUNE_PATH || len >= n_) return false;
+    ap %= n_;
+    aq %= n_;
+    g_.clear();
+    gf_.clear();
+    gr_.clear();
+    gp_.clear();
+    // x: a point with feature xf (ring vertex r >= 0: on the ring), f: the feature of the
+    // edge from x to the next point
+    auto add = [&](Pt x, i64 r, i64 xf, i64 f) {
+      if (!g_.empty() && g_.back().x == x.x && g_.back().y == x.y) {
+        gf_.back() = f;
+        if (r >= 0) {
+          gr_.back() = r;
+          gp_.back() = xf;
+        }
+        return;
+      }
+      g_.push_back(x);
+      gf_.push_back(f);
+      gr_.push_back(r);
+      gp_.push_back(xf);
+    };
+    add(v[ap], ap, vertex_feature(ap), fp);
+    add(p, -1, fp, fs);
+    add(q, -1, fq, fq);
+    for (i64 i = 0; i <= len; ++i) {  // aq back to ap along the ring
+      const i64 j = ((aq - i) % n_ + n_) % n_;
+      add(v[j], j, vertex_feature(j), edge_feature((j + n_ - 1) % n_));
+    }
+    if (g_.size() > 1 && g_.back().x == g_[0].x && g_.back().y == g_[0].y) {
+      g_.pop_back();
+      gf_.pop_back();
+      gr_.pop_back();
+      gp_.pop_back();
+    }
+    const std::size_t k = g_.size();
+    bool flat = true;  // no area (a spike): winding number 0 everywhere, nothing to show
+    for (std::size_t i = 2; i < k && flat; ++i) flat = orient(g_[0], g_[1], g_[i]) == 0;
+    if (flat) return true;
+    return fan_ok() || ears_ok();
+  }
+
+  // The fan from the centroid O: every triangle O, g_i, g_i+1 counter-clockwise or flat,
+  // and O within t_up of the feature of the edge g_i -> g_i+1.
+  bool fan_ok() {
+    const std::size_t k = g_.size();
+    double ox = 0, oy = 0;
+    for (const Pt& x : g_) {
+      ox += x.x;
+      oy += x.y;
+    }
+    const Pt O{ox / (double)k, oy / (double)k};
+    if (!(O.x - O.x == 0) || !(O.y - O.y == 0)) return false;
+    for (std::size_t i = 0; i < k; ++i)
+      if (orient(O, g_[i], g_[(i + 1) % k]) < 0) 
+        return false;
+    for (std::size_t i = 0; i < k; ++i) {
+      if (orient(O, g_[i], g_[(i + 1) % k]) == 0) continue;
+      const i64 f = gf_[i], j = f >> 1;  // a vertex: either of its edges (they contain it)
+      const bool ok = (f & 1) ? near_feature(*v_, edge_feature(j), O, t_up_) ||
+                                    near_feature(*v_, edge_feature((j + n_ - 1) % n_), O, t_up_)
+                              : near_feature(*v_, f, O, t_up_);
+      if (!ok) 
+        return false;
+    }
+    return true;
+  }
+
+  // Ear clipping (the ears chosen in float, each certified exactly): every triangle
+  // counter-clockwise or flat and within t_up of the ring (tri_ok).
+  bool ears_ok() {
+    const i64 k = (i64)g_.size();
+    if (k > PRUNE_EARS) return false;
+    nx_.resize(k);
+    pv_.resize(k);
+    for (i64 i = 0; i < k; ++i) {
+      nx_[i] = (i + 1) % k;
+      pv_[i] = (i + k - 1) % k;
+    }
+    // first the ears of ring vertices only (the ring path), then any
+    i64 left = k, i = 0;
+    for (int phase = 0; phase < 2 && left > 3; ++phase) {
+      for (i64 idle = 0; left > 3 && idle <= left;) {
+        const i64 a = pv_[i], c = nx_[i];
+        const bool ring = gr_[a] >= 0 && gr_[i] >= 0 && gr_[c] >= 0;
+        if ((phase == 1 || ring) && ear(a, i, c) && tri_ok(a, i, c)) {
+          nx_[a] = c;
+          pv_[c] = a;
+          --left;
+          idle = 0;
+          i = a;
+          continue;
+        }
+        i = c;
+        ++idle;
+      }
+    }
+    if (left > 3) 
+        return false;
+    const i64 a = pv_[i], c = nx_[i];
+    if (orient(g_[a], g_[i], g_[c]) < 0 || !tri_ok(a, i, c)) 
+        return false;
+    return true;
+  }
+
+  // b is an ear of the remaining polygon: a, b, c counter-clockwise (or flat) with no
+  // other remaining point inside (float: a choice; tri_ok decides)
+  bool ear(i64 a, i64 b, i64 c) const {
+    const int o = orient(g_[a], g_[b], g_[c]);
+    if (o < 0) return false;
+    if (o == 0) return true;
+    const Pt A = g_[a], B = g_[b], C = g_[c];
+    auto side = [](Pt p, Pt q, Pt r) { return (q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x); };
+    for (i64 j = nx_[c]; j != a; j = nx_[j]) {
+      const Pt P = g_[j];
+      if (side(A, B, P) >= 0 && side(B, C, P) >= 0 && side(C, A, P) >= 0) return false;
+    }
+    return true;
+  }
+
+  // Is the triangle of g_ points a, b, c within t_up of the ring (it is counter-clockwise
+  // or flat)? All three within t_up of one edge (those at its points and of its
+  // points' features), or, three ring vertices, a circumradius of at most t_up (the
+  // disks of radius t_up at the vertices then cover it).
+  bool tri_ok(i64 a, i64 b, i64 c) {
+    const i64 id[3] = {a, b, c};
+    if (orient(g_[a], g_[b], g_[c]) == 0) return true;
+    if (gr_[a] >= 0 && gr_[b] >= 0 && gr_[c] >= 0 && circum_ok(g_[a], g_[b], g_[c], t_up_))
+      return true;
+    i64 cand[12];
+    int nc = 0;
+    auto add = [&](i64 f) {  // an edge, or the two edges of a vertex
+      if (f & 1) {
+        cand[nc++] = edge_feature(f >> 1);
+        cand[nc++] = edge_feature(((f >> 1) + n_ - 1) % n_);
+      } else {
+        cand[nc++] = f;
+      }
+    };
+    for (int u = 0; u < 3; ++u) {
+      const i64 x = id[u];
+      if (gr_[x] >= 0) {
+        add(vertex_feature(gr_[x]));
+      } else {
+        add(gp_[x]);
+        add(gf_[x]);
+      }
+    }
+    for (int q = 0; q < nc; ++q) {
+      bool all = true;
+      for (int w = 0; w < 3 && all; ++w) {
+        const i64 y = id[w];
+        if (gr_[y] >= 0 ? feature_in(vertex_feature(gr_[y]), cand[q], n_)
+                        : feature_in(gp_[y], cand[q], n_) || feature_in(gf_[y], cand[q], n_))
+          continue;  // known
+        all = near_feature(*v_, cand[q], g_[y], t_up_);
+      }
+      if (all) return true;
+    }
+    return false;
+  }
+
+  // the circumradius of a, b, c at most t: |ab|^2 |bc|^2 |ca|^2 <= 4 t^2 cross^2
+  static bool circum_ok(Pt a, Pt b, Pt c, double t) {
+    return sign_of([&](auto z) {
+             auto abx = num(z, b.x) - num(z, a.x), aby = num(z, b.y) - num(z, a.y);
+             auto bcx = num(z, c.x) - num(z, b.x), bcy = num(z, c.y) - num(z, b.y);
+             auto cax = num(z, a.x) - num(z, c.x), cay = num(z, a.y) - num(z, c.y);
+             auto cr = abx * cay - aby * cax;
+             auto tt = num(z, t);
+             return (abx * abx + aby * aby) * (bcx * bcx + bcy * bcy) * (cax * cax + cay * cay) -
+                    num(z, 4.0) * tt * tt * cr * cr;
+           }) <= 0;
+  }
+};
+
+// Scratch of curve_crossings (reused: no allocation once grown)
+struct CrossScratch {
+  std::vector<i64> chain;  // chain c: segments chain[c] .. chain[c + 1] - 1
+  std::vector<int> dir;    // +1 / -1: x increasing / decreasing along it; 0: vertical
+  std::vector<double> x0, x1, y0, y1;
+};
+
+// The proper crossings of a closed polyline's segments (pairs i < j, not consecutive) in
+// `out`; false when two segments meet otherwise too (touch, overlap, a repeated point or
+// a fold back): then the polyline is not simple whatever the pruning does. The segments
+// are grouped into chains along which x strictly increases or decreases (two segments
+// of one chain meet only when consecutive); pairs of chains whose boxes overlap are
+// walked in x order, and segments whose boxes overlap are decided exactly.
+// With `first`, it stops at the first meeting (out then holds at most one pair).
+inline bool curve_crossings(const std::vector<Pt>& p, std::vector<std::pair<i64, i64>>& out,
+                            CrossScratch& S, bool first = false) {
+  out.clear();
+  const i64 n = (i64)p.size();
+  if (n < 3) return false;
+  bool other = false;
+  auto sgn = [](double d) { return (d > 0) - (d < 0); };
+  S.chain.clear();
+  S.dir.clear();
+  S.x0.clear();
+  S.x1.clear();
+  S.y0.clear();
+  S.y1.clear();
+  for (i64 i = 0; i < n; ++i) {
+    const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[(i + 2) % n];
+    if (a.x == b.x && a.y == b.y) return false;
+    if (orient(a, b, c) == 0 && dot_sign(a, b, b, c) < 0) other = true;  // folds back
+    const int d = sgn(b.x - a.x);
+    if (i == 0 || d == 0 || d != S.dir.back()) {
+      S.chain.push_back(i);
+      S.dir.push_back(d);
+      S.x0.push_back(INFINITY);
+      S.x1.push_back(-INFINITY);
+      S.y0.push_back(INFINITY);
+      S.y1.push_back(-INFINITY);
+    }
+    S.x0.back() = std::min({S.x0.back(), a.x, b.x});
+    S.x1.back() = std::max({S.x1.back(), a.x, b.x});
+    S.y0.back() = std::min({S.y0.back(), a.y, b.y});
+    S.y1.back() = std::max({S.y1.back(), a.y, b.y});
+  }
+  S.chain.push_back(n);
+  auto test = [&](i64 i, i64 j) {
+    if (i > j) std::swap(i, j);
+    if (j == i + 1 || (i == 0 && j == n - 1)) return;  // consecutive: their common end
+    const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
+    if (std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y))
+      return;
+    const int o1 = orient(a, b, c), o2 = orient(a, b, d);
+    if (o1 * o2 > 0) return;
+    const int o3 = orient(c, d, a), o4 = orient(c, d, b);
+    if (o3 * o4 > 0) return;
+    if (o1 * o2 < 0 && o3 * o4 < 0) {
+      out.emplace_back(i, j);
+      return;
+    }
+    if (o1 == 0 && o2 == 0) {  // collinear: they meet when their extents overlap
+      auto key = [&](const Pt& q) { return a.x != b.x ? q.x : q.y; };
+      const double s0 = std::min(key(a), key(b)), s1 = std::max(key(a), key(b));
+      const double t0 = std::min(key(c), key(d)), t1 = std::max(key(c), key(d));
+      if (t0 > s1 || s0 > t1) return;
+    }
+    other = true;
+  };
+  // the segments of chain c in increasing x: the k-th of them
+  auto seg = [&](i64 c, i64 k) {
+    return S.dir[c] >= 0 ? S.chain[c] + k : S.chain[c + 1] - 1 - k;
+  };
+  auto lo = [&](i64 i) { return std::min(p[i].x, p[(i + 1) % n].x); };
+  auto hi = [&](i64 i) { return std::max(p[i].x, p[(i + 1) % n].x); };
+  const i64 nch = (i64)S.dir.size();
+  if (first && other) return false;
+  box_pairs(nch, S.x0.data(), S.x1.data(), S.y0.data(), S.y1.data(), [&](i64 A, i64 B) {
+    const i64 la = S.chain[A + 1] - S.chain[A], lb = S.chain[B + 1] - S.chain[B];
+    i64 jb = 0;
+    for (i64 ka = 0; ka < la; ++ka) {
+      const i64 i = seg(A, ka);
+      const double l = lo(i), h = hi(i);
+      while (jb < lb && hi(seg(B, jb)) < l) ++jb;
+      for (i64 kb = jb; kb < lb && lo(seg(B, kb)) <= h; ++kb) {
+        test(i, seg(B, kb));
+        if (first && (other || !out.empty())) return false;
+      }
+    }
+    return true;
+  });
+  return !other;
+}
+
+}  // namespace off
+}  // namespace mk
