@@ -316,6 +316,65 @@ def test_containers_and_kinds():
     assert arr2.tolist() == [list(map(float, p)) for p in SQUARE]
 
 
+def test_offset_many_equals_single_calls():
+    # shapely polygons (read and checked by the core), rings (the reader), a multipolygon
+    # whose parts overlap (united first), a polygon with a hole, None
+    geoms = [
+        shapely.Polygon(L_SHAPE),
+        SQUARE,
+        FRAME,
+        shapely.MultiPolygon([shapely.box(0, 0, 2, 2), shapely.box(1, 1, 3, 3)]),
+        None,
+        shapely.Polygon(C_SHAPE),
+    ]
+    for d in (0.4, -0.2):
+        single = [None if g is None else mk.offset(g, d, tolerance=1e-3) for g in geoms]
+        for threads in (1, 2):
+            many = mk.offset_many(geoms, d, tolerance=1e-3, threads=threads)
+            assert isinstance(many, list) and many[4] is None
+            for a, b in zip(many, single):
+                assert (a is None and b is None) or a.equals_exact(b, 0)
+    out = mk.offset_many(tuple(geoms[:2]), 0.4, tolerance=1e-3)
+    assert isinstance(out, tuple)
+    arr = mk.offset_many(np.array([shapely.Polygon(SQUARE), shapely.Polygon()], object), 0.5)
+    assert isinstance(arr, np.ndarray) and arr[1].is_empty
+
+
+def test_offset_many_geoseries():
+    gpd = pytest.importorskip("geopandas")
+    s = gpd.GeoSeries([shapely.Polygon(SQUARE), None, shapely.Polygon(L_SHAPE)],
+                      index=[3, 7, 9], crs="EPSG:3857")  # fmt: skip
+    out = mk.offset_many(s, 0.5, tolerance=1e-3, threads=2)
+    assert isinstance(out, gpd.GeoSeries) and list(out.index) == [3, 7, 9]
+    assert out.crs == s.crs and out[7] is None
+    assert out[9].equals_exact(mk.offset(s[9], 0.5, tolerance=1e-3), 0)
+
+
+def test_offset_many_errors_in_order():
+    bowtie = shapely.Polygon([(0, 0), (2, 2), (2, 0), (0, 2)])
+    # a reading error comes first (the reader names it), then the offsets' own
+    with pytest.raises(SelfIntersectionError):
+        mk.offset_many([shapely.Polygon(SQUARE), bowtie], 0.5, tolerance=1e-3)
+    with pytest.raises(GeometryError, match="tolerance"):
+        mk.offset_many([shapely.Polygon(SQUARE)], 0.5, tolerance=1e-30)
+    with pytest.raises(GeometryError, match="offset_many takes"):
+        mk.offset_many(shapely.Polygon(SQUARE), 0.5)
+
+
+def test_fast_path_equals_reader():
+    # a shapely polygon is read and checked by the core; the same ring as a list goes
+    # through the reader: the same offset
+    for poly in (L_SHAPE, C_SHAPE, DUMBBELL):
+        for d in (0.3, -0.2):
+            a = mk.offset(shapely.Polygon(poly), d, tolerance=1e-3)
+            b = mk.offset([tuple(map(float, p)) for p in poly], d, tolerance=1e-3)
+            c = mk.offset(np.array(poly, float), d, tolerance=1e-3)
+            assert a.equals_exact(b, 0) and a.equals_exact(c, 0)
+    # invalid shapely input still gets the reader's error
+    with pytest.raises(SelfIntersectionError):
+        mk.offset(shapely.Polygon([(0, 0), (2, 2), (2, 0), (0, 2)]), 0.5, tolerance=1e-3)
+
+
 @pytest.mark.parametrize("scale", [2.0**-600, 2.0**-30, 2.0**40, 2.0**600])
 def test_extreme_magnitudes(scale):
     P = np.array(L_SHAPE, float) * scale

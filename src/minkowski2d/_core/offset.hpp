@@ -82,6 +82,98 @@ namespace mk {
 namespace off {
 
 // ------------------------------------------------------------------------------------
+// the rings' edges in a uniform grid (the distance check of a pruned result)
+
+class EdgeGrid {
+ public:
+  // cells of side at least h (and not more cells than about four per edge); marked
+  // (optional, one ring only: one per vertex): only the edges with a marked end
+  void build(const std::vector<std::vector<Pt>>& rings, double h,
+             const std::vector<char>* marked = nullptr) {
+    a_.clear();
+    b_.clear();
+    for (const auto& v : rings)
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const std::size_t j = (i + 1) % v.size();
+        if (marked && !(*marked)[i] && !(*marked)[j]) continue;  // one ring
+        a_.push_back(v[i]);
+        b_.push_back(v[j]);
+      }
+    const i64 n = (i64)a_.size();
+    if (n == 0) {
+      X0_ = Y0_ = 0;
+      nx_ = ny_ = 1;
+      start_.assign(2, 0);
+      return;
+    }
+    X0_ = Y0_ = INFINITY;
+    double X1 = -INFINITY, Y1 = -INFINITY;
+    for (i64 i = 0; i < n; ++i) {
+      X0_ = std::min({X0_, a_[i].x, b_[i].x});
+      X1 = std::max({X1, a_[i].x, b_[i].x});
+      Y0_ = std::min({Y0_, a_[i].y, b_[i].y});
+      Y1 = std::max({Y1, a_[i].y, b_[i].y});
+    }
+    const double W = X1 - X0_, H = Y1 - Y0_;
+    const double cs = std::max(h, std::sqrt(W * H / (4.0 * (double)n)));
+    const double fx = W / cs, fy = H / cs;
+    nx_ = fx < 1023 ? (i64)fx + 1 : 1024;  // also for NaN
+    ny_ = fy < 1023 ? (i64)fy + 1 : 1024;
+    ix_ = (double)nx_ / W;
+    iy_ = (double)ny_ / H;
+    if (!(std::isfinite(ix_) && std::isfinite(iy_) && W > 0 && H > 0)) {
+      nx_ = ny_ = 1;  // degenerate extents: one cell
+      ix_ = iy_ = 0;
+    }
+    start_.assign((std::size_t)(nx_ * ny_ + 1), 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1) {
+        for (i64 c = 0; c < nx_ * ny_; ++c) start_[c + 1] += start_[c];
+        item_.resize((std::size_t)start_[nx_ * ny_]);
+        fill_.assign(start_.begin(), start_.end() - 1);
+      }
+      for (i64 i = 0; i < n; ++i) {
+        const i64 cx0 = cx(std::min(a_[i].x, b_[i].x)), cx1 = cx(std::max(a_[i].x, b_[i].x));
+        const i64 cy0 = cy(std::min(a_[i].y, b_[i].y)), cy1 = cy(std::max(a_[i].y, b_[i].y));
+        for (i64 y = cy0; y <= cy1; ++y)
+          for (i64 x = cx0; x <= cx1; ++x) {
+            if (pass == 0) ++start_[y * nx_ + x + 1];
+            else item_[fill_[y * nx_ + x]++] = i;
+          }
+      }
+    }
+    stamp_.assign((std::size_t)n, -1);
+    query_ = 0;
+  }
+  // f(c, d) for each edge c -> d registered in a cell that the box meets (once each);
+  // false from f stops (returned)
+  template <class F>
+  bool query(double x0, double x1, double y0, double y1, F&& f) {
+    ++query_;
+    const i64 X0 = cx(x0), X1 = cx(x1), Y0 = cy(y0), Y1 = cy(y1);
+    for (i64 y = Y0; y <= Y1; ++y)
+      for (i64 x = X0; x <= X1; ++x)
+        for (i64 q = start_[y * nx_ + x]; q < start_[y * nx_ + x + 1]; ++q) {
+          const i64 i = item_[q];
+          if (stamp_[i] == query_) continue;
+          stamp_[i] = query_;
+          if (!f(a_[i], b_[i])) return false;
+        }
+    return true;
+  }
+
+ private:
+  std::vector<Pt> a_, b_;
+  std::vector<i64> start_, item_, fill_, stamp_;
+  double X0_ = 0, Y0_ = 0, ix_ = 1, iy_ = 1;
+  i64 nx_ = 1, ny_ = 1, query_ = 0;
+  // cell indices: floor is monotone, so a box meets the cells of its two corners' range
+  i64 cx(double x) const { return cell(std::floor((x - X0_) * ix_), nx_); }
+  i64 cy(double y) const { return cell(std::floor((y - Y0_) * iy_), ny_); }
+  static i64 cell(double t, i64 n) { return !(t >= 0) ? 0 : (t >= (double)n ? n - 1 : (i64)t); }
+};
+
+// ------------------------------------------------------------------------------------
 // one polygonal set
 
 struct Params {
@@ -116,11 +208,13 @@ class Offsetter {
     const double r0 = std::fabs(p.distance);
     const bool grow = p.distance > 0;
     // rings with the inside on the left
-    std::vector<std::vector<Pt>> rings;
+    std::vector<std::vector<Pt>>& rings = rings_;
+    for (auto& v : rings) v.clear();
+    rings.resize(unite ? 0 : input.size());
     if (unite) {
       united(input, rings, delta);
     } else {
-      for (const ms::Ring& r : input) rings.push_back(to_pts(r));
+      for (std::size_t k = 0; k < input.size(); ++k) to_pts(input[k], rings[k]);
     }
     for (auto& v : rings) drop_straight(v);
     if (r0 == 0) {  // the polygon itself (regularized: the overlay of its rings)
@@ -154,12 +248,14 @@ class Offsetter {
     // them; then vertices may coincide or become collinear: cleaned again), in the curve's
     // frame (offset side on the right)
     const Pow2 down_scale(-e0);
-    std::vector<std::vector<Pt>> sc;
+    std::vector<std::vector<Pt>>& sc = sc_;
+    std::size_t nsc = 0;
     for (auto& v0 : rings) {
       if (v0.empty()) continue;
       if (!grow && v0.size() < 3) continue;  // no area: nothing to shrink
-      std::vector<Pt> sv;
-      sv.reserve(v0.size());
+      if (sc.size() <= nsc) sc.emplace_back();
+      std::vector<Pt>& sv = sc[nsc];
+      sv.clear();
       for (const Pt& q : v0) {
         Pt t{down_scale(q.x), down_scale(q.y)};
         if (sv.empty() || sv.back().x != t.x || sv.back().y != t.y) sv.push_back(t);
@@ -169,15 +265,16 @@ class Offsetter {
       drop_straight(sv);
       if (!grow && sv.size() < 3) continue;
       if (!grow) std::reverse(sv.begin(), sv.end());
-      sc.push_back(std::move(sv));
+      ++nsc;
     }
+    sc.resize(nsc);
     if (!set_tolerances(p, grow, want_labels, least, mu, e0, sc, s, res)) return;
     // the curves, pruned (round joins), one simple curve taken as it is, else the overlay;
     // a pruned result must pass the check of its lower bound, else it is computed again
     // unpruned
     const bool prune = p.join == ROUND && !want_labels;
     if (!curves(sc, s, want_labels, prune, res)) return;
-    if (pruned_ && !covers(res.rings, sc, s.r_check)) {
+    if (pruned_ && !covers(res.rings, sc, s.r_check, direct_ ? &affected_[0] : nullptr)) {
       res.rings.clear();
       if (!curves(sc, s, want_labels, false, res)) return;
     }
@@ -187,12 +284,14 @@ class Offsetter {
  private:
   Pruner pruner_;
   bool pruned_ = false;
+  bool direct_ = false;  // the result is the one pruned curve itself
   std::vector<const std::vector<Pt>*> ring_;
   std::vector<std::pair<i64, i64>> cross_;
-  CrossScratch cscr_;
+  Chains cscr_;
+  EdgeGrid grid_;
+  std::vector<std::vector<char>> affected_;  // per curve, the cuts' ring vertices
   BoxScratch boxes_;
-  std::vector<Pt> ca_, cb_;
-  std::vector<int> cg_;
+
   std::vector<double> cbox_;
 
   // Builds the curves of the rings sc (pruned when asked) and their region in
@@ -229,16 +328,22 @@ class Offsetter {
       const bool clean = curve_crossings(cv.pts, cross_, cscr_, true);
       one_simple = clean && cross_.empty();
       if (one_simple || !prune) continue;
-      // the local pass, then the crossings that remain, and the cuts they allow
-      bool pr = pruner_.run(cv, *ring_[k], s, nullptr);
+      if (affected_.size() <= k) affected_.resize(k + 1);
+      affected_[k].assign(ring_[k]->size(), 0);
+      bool pr = pruner_.run(cv, *ring_[k], s, nullptr, affected_[k]);
       one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
-      if (!one_simple && pruner_.run(cv, *ring_[k], s, &cross_)) {
+      // (a second pass starts away from the crossings the first left: a loop across its
+      // start)
+      for (int pass = 0; pass < 2 && !one_simple; ++pass) {
+        bool pr2 = pruner_.run(cv, *ring_[k], s, &cross_, affected_[k]);
+        if (!pr2) break;
         pr = true;
         one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
       }
       pruned_ = pruned_ || pr;
     }
-    if (nc == 1 && one_simple) {
+    direct_ = nc == 1 && one_simple;
+    if (direct_) {
       direct(curves_[0], s.grow, want_labels, res);
       return true;
     }
@@ -262,72 +367,59 @@ class Offsetter {
   }
 
   // Is every edge of the result R (scaled) at distance >= t from the rings sc? Exact:
-  // segment pairs whose boxes come within t, then orientations and distances.
-  bool covers(const ov::Rings& R, const std::vector<std::vector<Pt>>& sc, double t) {
+  // segment pairs whose boxes come within t, then orientations and distances. marked
+  // (the one ring's cut vertices, when R is the pruned curve itself, unrounded): from
+  // the edges at marked vertices only (see the header of offset_prune.hpp).
+  bool covers(const ov::Rings& R, const std::vector<std::vector<Pt>>& sc, double t,
+              const std::vector<char>* marked) {
     if (R.status != OK) return true;  // an error is reported as it is
-    std::vector<Pt> &a = ca_, &b = cb_;
-    std::vector<int>& grp = cg_;
-    a.clear();
-    b.clear();
-    grp.clear();
+    // the output's edges widened by t (and more than the rounding of the widening)
+    double M = 0;
+    for (double c : R.xy) M = std::max(M, std::fabs(c));
+    const double w = t * (1 + 0x1p-40) + span_slack(M);
+    grid_.build(sc, w, marked);
     for (std::size_t k = 0; k + 1 < R.ring_off.size(); ++k) {
       const i64 r0 = R.ring_off[k], r1 = R.ring_off[k + 1];
       for (i64 i = r0; i < r1; ++i) {
         const i64 j = i + 1 < r1 ? i + 1 : r0;
-        a.push_back(Pt{R.xy[2 * i], R.xy[2 * i + 1]});
-        b.push_back(Pt{R.xy[2 * j], R.xy[2 * j + 1]});
-        grp.push_back(0);
+        const Pt p{R.xy[2 * i], R.xy[2 * i + 1]}, q{R.xy[2 * j], R.xy[2 * j + 1]};
+        const double x0 = std::min(p.x, q.x) - w, x1 = std::max(p.x, q.x) + w,
+                     y0 = std::min(p.y, q.y) - w, y1 = std::max(p.y, q.y) + w;
+        const bool ok = grid_.query(x0, x1, y0, y1, [&](Pt c, Pt d) {
+          if (std::max(c.x, d.x) < x0 || std::min(c.x, d.x) > x1 || std::max(c.y, d.y) < y0 ||
+              std::min(c.y, d.y) > y1)
+            return true;
+          return far_apart(p, q, c, d, t);
+        });
+        if (!ok) return false;
       }
     }
-    for (const auto& v : sc)
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        a.push_back(v[i]);
-        b.push_back(v[(i + 1) % v.size()]);
-        grp.push_back(1);
-      }
-    const i64 n = (i64)a.size();
-    cbox_.resize(4 * (std::size_t)n);
-    double *x0 = cbox_.data(), *x1 = x0 + n, *y0 = x1 + n, *y1 = y0 + n;
-    for (i64 i = 0; i < n; ++i) {
-      // output edges widened by t (and more than the rounding of the widening)
-      const double M = std::max({std::fabs(a[i].x), std::fabs(a[i].y), std::fabs(b[i].x),
-                                 std::fabs(b[i].y)});
-      const double w = grp[i] == 0 ? t * (1 + 0x1p-40) + span_slack(M) : 0.0;
-      x0[i] = std::min(a[i].x, b[i].x) - w;
-      x1[i] = std::max(a[i].x, b[i].x) + w;
-      y0[i] = std::min(a[i].y, b[i].y) - w;
-      y1[i] = std::max(a[i].y, b[i].y) + w;
-    }
-    bool ok = true;
-    box_pairs_grouped(n, x0, x1, y0, y1, grp.data(), 2, boxes_, [&](i64 i, i64 j) {
-      ok = far_apart(a[i], b[i], a[j], b[j], t);
-      return ok;
-    });
-    return ok;
+    return true;
   }
 
-  // Are the segments pq and cd at distance >= t (exactly)? First in double: with every
-  // coordinate below 2 in magnitude (the scaled problem) a squared point-segment distance
-  // computed as in seg_d2 is within 2^-44 of the exact one (the differences and products
-  // are below 64, a few roundings each; a projection outside its segment taken as inside
-  // or the reverse changes it by the square of the rounding of the dot product, far
-  // less), so a float distance at least t^2 + 2^-40 away decides, once the segments are
-  // known not to meet (their boxes apart, or the orientations).
+  // Are the segments pq and cd at distance >= t (exactly)? They must not cross (boxes
+  // apart, or the orientations), and each end must be at distance >= t from the other
+  // segment: first in double -- with every coordinate below 2 in magnitude (the scaled
+  // problem) a squared point-segment distance computed as in seg_d2 is within 2^-44 of
+  // the exact one (differences and products below 64, a few roundings each; a projection
+  // outside its segment taken as inside or the reverse changes it by the square of the
+  // rounding of the dot product, far less), so one at least t^2 + 2^-40 decides -- else
+  // exactly (seg_dist_cmp).
   static bool far_apart(Pt p, Pt q, Pt c, Pt d, double t) {
+    const bool apart = std::max(p.x, q.x) < std::min(c.x, d.x) ||
+                       std::max(c.x, d.x) < std::min(p.x, q.x) ||
+                       std::max(p.y, q.y) < std::min(c.y, d.y) ||
+                       std::max(c.y, d.y) < std::min(p.y, q.y);
+    if (!apart && cross_properly(p, q, c, d)) return false;
     const double big = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y),
                                  std::fabs(c.x), std::fabs(c.y), std::fabs(d.x), std::fabs(d.y)});
-    if (big < 2 && t < 2) {
-      const double d2 = std::min(std::min(seg_d2(c, d, p), seg_d2(c, d, q)),
-                                 std::min(seg_d2(p, q, c), seg_d2(p, q, d)));
-      if (d2 >= t * t + 0x1p-40) {
-        const bool apart = std::max(p.x, q.x) < std::min(c.x, d.x) ||
-                           std::max(c.x, d.x) < std::min(p.x, q.x) ||
-                           std::max(p.y, q.y) < std::min(c.y, d.y) ||
-                           std::max(c.y, d.y) < std::min(p.y, q.y);
-        if (apart || !cross_properly(p, q, c, d)) return true;
-      }
-    }
-    return far_apart_exact(p, q, c, d, t);
+    const bool fl = big < 2 && t < 2;
+    const double lim = t * t + 0x1p-40;
+    auto far = [&](Pt a, Pt b, Pt x) {
+      if (fl && seg_d2(a, b, x) >= lim) return true;
+      return seg_dist_cmp(a, b, x, t) >= 0;
+    };
+    return far(c, d, p) && far(c, d, q) && far(p, q, c) && far(p, q, d);
   }
 
   static double seg_d2(Pt a, Pt b, Pt p) {
@@ -343,14 +435,7 @@ class Offsetter {
     return cr * cr / L;
   }
 
-  static bool far_apart_exact(Pt p, Pt q, Pt c, Pt d, double t) {
-    const int o1 = orient(p, q, c), o2 = orient(p, q, d), o3 = orient(c, d, p),
-              o4 = orient(c, d, q);
-    if (o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0))
-      return false;  // they cross or touch
-    return seg_dist_cmp(c, d, p, t) >= 0 && seg_dist_cmp(c, d, q, t) >= 0 &&
-           seg_dist_cmp(p, q, c, t) >= 0 && seg_dist_cmp(p, q, d, t) >= 0;
-  }
+
 
   // The polygon itself, regularized: the overlay of its rings (distance 0).
   static void regularized(const std::vector<std::vector<Pt>>& rings, Result& res) {
@@ -437,13 +522,22 @@ class Offsetter {
   }
 
   std::vector<Curve> curves_;
+  std::vector<std::vector<Pt>> rings_, sc_;  // the rings read, scaled (reused)
 
+ public:
+  // about how many points its buffers hold (the curves')
+  std::size_t footprint() const {
+    std::size_t n = 0;
+    for (const Curve& c : curves_) n += c.pts.capacity();
+    return n;
+  }
+
+ private:
   // The region of one simple curve: its inside when it turns the way the rule selects
   // (counter-clockwise for a grow, clockwise for a shrink, whose curve has weight -1),
   // else nothing. Straight vertices dropped, from the least (x, y) vertex.
   static void direct(const Curve& cv, bool grow, bool want_labels, Result& res) {
-    std::vector<Pt> p = cv.pts;
-    std::vector<i64> lab = cv.lab;
+    const std::vector<Pt>& p = cv.pts;
     const std::size_t n = p.size();
     std::size_t lo = 0;
     for (std::size_t i = 1; i < n; ++i)
@@ -452,27 +546,20 @@ class Offsetter {
     ov::Rings& R = res.rings;
     R.clear();
     if ((o > 0) != grow) return;  // winding -1 inside (a shrink that erases everything)
-    if (!grow) {
-      std::reverse(p.begin(), p.end());
-      std::vector<i64> rl(n);
-      for (std::size_t i = 0; i < n; ++i) rl[i] = lab[(2 * n - 2 - i) % n];
-      lab.swap(rl);
-      lo = n - 1 - lo;
-    }
-    std::vector<Pt> q;
-    std::vector<i64> ql;
-    for (std::size_t k = 0; k < n; ++k) {  // lo is extreme (never straight): q starts there
-      std::size_t i = (lo + k) % n;
+    // from lo, forwards (grow) or backwards (shrink: the label of the edge from point i
+    // to point i - 1 is that of the curve's edge i - 1), straight vertices dropped (lo is
+    // extreme, never straight)
+    R.xy.reserve(2 * n);
+    i64 count = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = grow ? (lo + k) % n : (lo + n - k) % n;
       if (orient(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) == 0) continue;  // straight on
-      q.push_back(p[i]);
-      ql.push_back(lab[i]);
+      R.xy.push_back(p[i].x);
+      R.xy.push_back(p[i].y);
+      if (want_labels) res.labels.push_back(grow ? cv.lab[i] : cv.lab[(i + n - 1) % n]);
+      ++count;
     }
-    for (std::size_t k = 0; k < q.size(); ++k) {
-      R.xy.push_back(q[k].x);
-      R.xy.push_back(q[k].y);
-      if (want_labels) res.labels.push_back(ql[k]);
-    }
-    R.ring_off.push_back((i64)q.size());
+    R.ring_off.push_back(count);
     R.poly_off.push_back(1);
   }
 
@@ -522,7 +609,10 @@ class Offsetter {
         v.push_back(Pt{out.xy[2 * i], out.xy[2 * i + 1]});
       rings.push_back(std::move(v));
     }
-    for (const ms::Ring& r : pts_only) rings.push_back(to_pts(r));
+    for (const ms::Ring& r : pts_only) {
+      rings.emplace_back();
+      to_pts(r, rings.back());
+    }
     if (big > 0) {
       int e;
       std::frexp(big, &e);

@@ -27,6 +27,7 @@ enum Code : int {
   UNDERFLOW = 3,    // a result of magnitude below 2^-1020 (rounding may exceed the margin)
   UNCERTIFIED = 4,  // a piece failed its exact certificate (never expected: a bug)
   OVERFLOWS = 5,    // a result coordinate beyond float64
+  INPUT = 6,        // offset_polygons: not a valid polygonal set here (the reader decides)
 };
 
 // label of a curve segment that is a detour through a vertex of the polygon
@@ -162,10 +163,9 @@ inline void drop_straight(std::vector<Pt>& v) {
   v.swap(out);
 }
 
-inline std::vector<Pt> to_pts(const ms::Ring& r) {
-  std::vector<Pt> v((std::size_t)r.n());
+inline void to_pts(const ms::Ring& r, std::vector<Pt>& v) {
+  v.resize((std::size_t)r.n());
   for (i64 i = 0; i < r.n(); ++i) v[i] = Pt{r.x(i), r.y(i)};
-  return v;
 }
 
 // ------------------------------------------------------------------------------------

@@ -91,12 +91,16 @@ class Pruner {
   // when it cut any. crossings: the proper crossings of cv's segments (pairs i < j).
   // crossings null: the local pass (each segment against the last PRUNE_WINDOW segments
   // of the stack whose boxes meet its own).
+  // affected: per ring vertex, set where a cut changed the pieces of the vertex or of the
+  // edge that starts at it (the ring path from A's start to B's end anchor).
   bool run(Curve& cv, const std::vector<Pt>& v, const Setup& s,
-           const std::vector<std::pair<i64, i64>>* crossings) {
+           const std::vector<std::pair<i64, i64>>* crossings, std::vector<char>& affected) {
     const i64 m = (i64)cv.pts.size(), n = (i64)v.size();
     if (m < 4 || n < 3 || s.join != ROUND || (crossings && crossings->empty())) return false;
+    affected_ = &affected;
     v_ = &v;
     t_up_ = s.t_up;
+    t_lo_ = s.r_check * (1 - 0x1p-30);
     n_ = n;
     local_ = crossings == nullptr;
     if (!local_) partners(m, *crossings);
@@ -182,8 +186,9 @@ class Pruner {
   }
 
   const std::vector<Pt>* v_ = nullptr;
+  std::vector<char>* affected_ = nullptr;
   bool local_ = false;
-  double t_up_ = 0;
+  double t_up_ = 0, t_lo_ = 0;
   i64 n_ = 0;
   std::vector<i64> part_off_, part_, fill_, where_, cand_;
   // the stack: points, their anchors (unwrapped: ring vertex anchor mod n) and features;
@@ -229,7 +234,7 @@ class Pruner {
       const i64 e = where_[part_[q]];
       if (e >= 0 && e < top && qorig_[e] == part_[q]) cand_.push_back(e);
     }
-    std::sort(cand_.begin(), cand_.end(), [](i64 a, i64 b) { return a > b; });
+    std::sort(cand_.begin(), cand_.end());
     return !cand_.empty();
   }
 
@@ -241,10 +246,14 @@ class Pruner {
       if (tries <= 0) break;
       const Pt a = Q_[e], b = Q_[e + 1], c = Q_[top];
       if (!cross_properly(a, b, c, end)) continue;
-      --tries;
       Pt X;
       if (!crossing_point(a, b, c, end, X)) continue;
       const i64 fa = qsf_[e];
+      // X on the result's boundary must keep r_lo from the polygon: a cut whose X comes
+      // nearer to the features of A or B (a detour's spike cut near its vertex) would
+      // fail the check of the result (a heuristic in double: the check decides)
+      if (feature_d2(fa, X) < t_lo_ * t_lo_ || feature_d2(fb, X) < t_lo_ * t_lo_) continue;
+      --tries;
       if (!near_feature(*v_, fa, X, t_up_) || !near_feature(*v_, fb, X, t_up_)) continue;
       const i64 ea = qa_[e + 1];  // A's end anchor: X's anchor
       // A up to X: anchors of A
@@ -252,6 +261,7 @@ class Pruner {
       // the new segment X -> end, from A's end anchor to B's
       if (!piece_ok(ea, X, fa, end, fb, end_anc, end_pf)) continue;
       // cut: drop the stack above A, X on top with the current segment from it
+      for (i64 u = qa_[e]; u <= end_anc; ++u) (*affected_)[u % n_] = 1;
       for (i64 q = e + 1; q <= top; ++q) where_[qorig_[q]] = -1;
       Q_.resize(e + 1);
       qa_.resize(e + 1);
@@ -261,6 +271,17 @@ class Pruner {
       return true;
     }
     return false;
+  }
+
+  // the squared distance from x to feature f, in double
+  double feature_d2(i64 f, Pt x) const {
+    const std::vector<Pt>& v = *v_;
+    const i64 j = f >> 1;
+    const Pt a = v[j], b = (f & 1) ? v[j] : v[(j + 1) % n_];
+    const double dx = b.x - a.x, dy = b.y - a.y, px = x.x - a.x, py = x.y - a.y;
+    const double L = dx * dx + dy * dy, u = L > 0 ? std::clamp((px * dx + py * dy) / L, 0.0, 1.0) : 0.0;
+    const double ex = px - u * dx, ey = py - u * dy;
+    return ex * ex + ey * ey;
   }
 
   // X: a double right of (or on) both lines ab and cd, near their crossing (false when
@@ -350,16 +371,14 @@ class Pruner {
     const Pt O{ox / (double)k, oy / (double)k};
     if (!(O.x - O.x == 0) || !(O.y - O.y == 0)) return false;
     for (std::size_t i = 0; i < k; ++i)
-      if (orient(O, g_[i], g_[(i + 1) % k]) < 0) 
-        return false;
+      if (orient(O, g_[i], g_[(i + 1) % k]) < 0) return false;
     for (std::size_t i = 0; i < k; ++i) {
       if (orient(O, g_[i], g_[(i + 1) % k]) == 0) continue;
       const i64 f = gf_[i], j = f >> 1;  // a vertex: either of its edges (they contain it)
       const bool ok = (f & 1) ? near_feature(*v_, edge_feature(j), O, t_up_) ||
                                     near_feature(*v_, edge_feature((j + n_ - 1) % n_), O, t_up_)
                               : near_feature(*v_, f, O, t_up_);
-      if (!ok) 
-        return false;
+      if (!ok) return false;
     }
     return true;
   }
@@ -472,96 +491,147 @@ class Pruner {
   }
 };
 
-// Scratch of curve_crossings (reused: no allocation once grown)
-struct CrossScratch {
-  std::vector<i64> chain;  // chain c: segments chain[c] .. chain[c + 1] - 1
-  std::vector<int> dir;    // +1 / -1: x increasing / decreasing along it; 0: vertical
-  std::vector<double> x0, x1, y0, y1;
+// Segments of closed rings grouped into chains along which x strictly increases or
+// decreases (vertical segments alone) and y does not turn back: two segments of one
+// chain meet only when consecutive, and a chain's segments are in order along both
+// axes. Reused: no allocation once grown.
+struct Chains {
+  std::vector<Pt> a, b;                // segment i runs a[i] -> b[i]
+  std::vector<i64> start;              // chain c: segments start[c] .. start[c + 1] - 1
+  std::vector<int> dx, dy;             // +1 / -1: increasing / decreasing along x, y
+  std::vector<double> x0, x1, y0, y1;  // the chains' boxes
+
+  void clear() {
+    a.clear();
+    b.clear();
+    start.clear();
+    dx.clear();
+    dy.clear();
+    x0.clear();
+    x1.clear();
+    y0.clear();
+    y1.clear();
+  }
+  // The segments p[i] -> p[(i + 1) % n] of a closed ring.
+  void add_ring(const Pt* p, i64 n) {
+    for (i64 i = 0; i < n; ++i) {
+      const Pt &u = p[i], &w = p[(i + 1) % n];
+      const int sx = (w.x > u.x) - (w.x < u.x), sy = (w.y > u.y) - (w.y < u.y);
+      if (i == 0 || sx == 0 || sx != dx.back() || (sy != 0 && dy.back() != 0 && sy != dy.back())) {
+        start.push_back((i64)a.size());
+        dx.push_back(sx);
+        dy.push_back(0);
+        x0.push_back(INFINITY);
+        x1.push_back(-INFINITY);
+        y0.push_back(INFINITY);
+        y1.push_back(-INFINITY);
+      }
+      if (sy != 0) dy.back() = sy;
+      a.push_back(u);
+      b.push_back(w);
+      x0.back() = std::min({x0.back(), u.x, w.x});
+      x1.back() = std::max({x1.back(), u.x, w.x});
+      y0.back() = std::min({y0.back(), u.y, w.y});
+      y1.back() = std::max({y1.back(), u.y, w.y});
+    }
+  }
+  i64 chains() const { return (i64)dx.size(); }
+  i64 size(i64 c) const { return (c + 1 < chains() ? start[c + 1] : (i64)a.size()) - start[c]; }
+  // the k-th segment of chain c in increasing x (along y: in increasing y)
+  i64 seg(i64 c, i64 k, bool y) const {
+    return (y ? dy[c] : dx[c]) >= 0 ? start[c] + k : start[c] + size(c) - 1 - k;
+  }
+  double lo(i64 i, bool y) const { return y ? std::min(a[i].y, b[i].y) : std::min(a[i].x, b[i].x); }
+  double hi(i64 i, bool y) const { return y ? std::max(a[i].y, b[i].y) : std::max(a[i].x, b[i].x); }
 };
+
+// f(i, j) for the segments i of chain A of X and j of chain B of Y whose boxes come
+// within w of each other: the chains halved while their parts' boxes (those of their
+// end points: the chains are monotone along both axes) meet; false from f stops
+// (returned).
+template <class F>
+inline bool chain_walk(const Chains& X, i64 A, const Chains& Y, i64 B, double w, F&& f) {
+  struct Part {
+    i64 a0, a1, b0, b1;  // segments [a0, a1) of X, [b0, b1) of Y (storage order)
+  };
+  auto meet = [&](const Part& q) {
+    const Pt &p0 = X.a[q.a0], &p1 = X.b[q.a1 - 1], &q0 = Y.a[q.b0], &q1 = Y.b[q.b1 - 1];
+    return std::max(p0.x, p1.x) + w >= std::min(q0.x, q1.x) &&
+           std::max(q0.x, q1.x) >= std::min(p0.x, p1.x) - w &&
+           std::max(p0.y, p1.y) + w >= std::min(q0.y, q1.y) &&
+           std::max(q0.y, q1.y) >= std::min(p0.y, p1.y) - w;
+  };
+  Part stack[128];
+  int top = 0;
+  stack[top++] = Part{X.start[A], X.start[A] + X.size(A), Y.start[B], Y.start[B] + Y.size(B)};
+  while (top > 0) {
+    const Part q = stack[--top];
+    if (!meet(q)) continue;
+    const i64 la = q.a1 - q.a0, lb = q.b1 - q.b0;
+    if (la <= 2 && lb <= 2) {
+      for (i64 i = q.a0; i < q.a1; ++i)
+        for (i64 j = q.b0; j < q.b1; ++j)
+          if (!f(i, j)) return false;
+      continue;
+    }
+    if (la >= lb) {
+      const i64 m = q.a0 + la / 2;
+      stack[top++] = Part{q.a0, m, q.b0, q.b1};
+      stack[top++] = Part{m, q.a1, q.b0, q.b1};
+    } else {
+      const i64 m = q.b0 + lb / 2;
+      stack[top++] = Part{q.a0, q.a1, q.b0, m};
+      stack[top++] = Part{q.a0, q.a1, m, q.b1};
+    }
+  }
+  return true;
+}
 
 // The proper crossings of a closed polyline's segments (pairs i < j, not consecutive) in
 // `out`; false when two segments meet otherwise too (touch, overlap, a repeated point or
-// a fold back): then the polyline is not simple whatever the pruning does. The segments
-// are grouped into chains along which x strictly increases or decreases (two segments
-// of one chain meet only when consecutive); pairs of chains whose boxes overlap are
-// walked in x order, and segments whose boxes overlap are decided exactly.
-// With `first`, it stops at the first meeting (out then holds at most one pair).
+// a fold back): then the polyline is not simple whatever the pruning does. Pairs of
+// chains whose boxes overlap are walked in x order; segments whose boxes overlap are
+// decided exactly. With `first`, it stops at the first meeting (out then holds at most
+// one pair).
 inline bool curve_crossings(const std::vector<Pt>& p, std::vector<std::pair<i64, i64>>& out,
-                            CrossScratch& S, bool first = false) {
+                            Chains& S, bool first = false) {
   out.clear();
   const i64 n = (i64)p.size();
   if (n < 3) return false;
   bool other = false;
-  auto sgn = [](double d) { return (d > 0) - (d < 0); };
-  S.chain.clear();
-  S.dir.clear();
-  S.x0.clear();
-  S.x1.clear();
-  S.y0.clear();
-  S.y1.clear();
   for (i64 i = 0; i < n; ++i) {
     const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[(i + 2) % n];
     if (a.x == b.x && a.y == b.y) return false;
     if (orient(a, b, c) == 0 && dot_sign(a, b, b, c) < 0) other = true;  // folds back
-    const int d = sgn(b.x - a.x);
-    if (i == 0 || d == 0 || d != S.dir.back()) {
-      S.chain.push_back(i);
-      S.dir.push_back(d);
-      S.x0.push_back(INFINITY);
-      S.x1.push_back(-INFINITY);
-      S.y0.push_back(INFINITY);
-      S.y1.push_back(-INFINITY);
-    }
-    S.x0.back() = std::min({S.x0.back(), a.x, b.x});
-    S.x1.back() = std::max({S.x1.back(), a.x, b.x});
-    S.y0.back() = std::min({S.y0.back(), a.y, b.y});
-    S.y1.back() = std::max({S.y1.back(), a.y, b.y});
   }
-  S.chain.push_back(n);
+  if (first && other) return false;
+  S.clear();
+  S.add_ring(p.data(), n);
   auto test = [&](i64 i, i64 j) {
     if (i > j) std::swap(i, j);
-    if (j == i + 1 || (i == 0 && j == n - 1)) return;  // consecutive: their common end
-    const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
+    if (j == i + 1 || (i == 0 && j == n - 1)) return true;  // consecutive: their common end
+    const Pt &a = S.a[i], &b = S.b[i], &c = S.a[j], &d = S.b[j];
     if (std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y))
-      return;
+      return true;
     const int o1 = orient(a, b, c), o2 = orient(a, b, d);
-    if (o1 * o2 > 0) return;
+    if (o1 * o2 > 0) return true;
     const int o3 = orient(c, d, a), o4 = orient(c, d, b);
-    if (o3 * o4 > 0) return;
+    if (o3 * o4 > 0) return true;
     if (o1 * o2 < 0 && o3 * o4 < 0) {
       out.emplace_back(i, j);
-      return;
+      return !first;
     }
     if (o1 == 0 && o2 == 0) {  // collinear: they meet when their extents overlap
       auto key = [&](const Pt& q) { return a.x != b.x ? q.x : q.y; };
       const double s0 = std::min(key(a), key(b)), s1 = std::max(key(a), key(b));
       const double t0 = std::min(key(c), key(d)), t1 = std::max(key(c), key(d));
-      if (t0 > s1 || s0 > t1) return;
+      if (t0 > s1 || s0 > t1) return true;
     }
     other = true;
+    return !first;
   };
-  // the segments of chain c in increasing x: the k-th of them
-  auto seg = [&](i64 c, i64 k) {
-    return S.dir[c] >= 0 ? S.chain[c] + k : S.chain[c + 1] - 1 - k;
-  };
-  auto lo = [&](i64 i) { return std::min(p[i].x, p[(i + 1) % n].x); };
-  auto hi = [&](i64 i) { return std::max(p[i].x, p[(i + 1) % n].x); };
-  const i64 nch = (i64)S.dir.size();
-  if (first && other) return false;
-  box_pairs(nch, S.x0.data(), S.x1.data(), S.y0.data(), S.y1.data(), [&](i64 A, i64 B) {
-    const i64 la = S.chain[A + 1] - S.chain[A], lb = S.chain[B + 1] - S.chain[B];
-    i64 jb = 0;
-    for (i64 ka = 0; ka < la; ++ka) {
-      const i64 i = seg(A, ka);
-      const double l = lo(i), h = hi(i);
-      while (jb < lb && hi(seg(B, jb)) < l) ++jb;
-      for (i64 kb = jb; kb < lb && lo(seg(B, kb)) <= h; ++kb) {
-        test(i, seg(B, kb));
-        if (first && (other || !out.empty())) return false;
-      }
-    }
-    return true;
-  });
+  box_pairs(S.chains(), S.x0.data(), S.x1.data(), S.y0.data(), S.y1.data(),
+            [&](i64 A, i64 B) { return chain_walk(S, A, S, B, 0.0, test); });
   return !other;
 }
 

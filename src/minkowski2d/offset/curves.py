@@ -13,11 +13,13 @@ from .._engine import core
 from .._engine import options as _options
 from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
 from .._engine.containers import is_many
+from .._engine.polygon import polygon_arrays
 from .._engine.reader import PARTS, read
 from .._engine.status import status_error
 from ..errors import (
     GeometryError,
     OverflowGeometryError,
+    ShapeError,
 )
 
 #: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
@@ -114,6 +116,7 @@ def _run(
     lim: float,
     extra_delta: float = 0.0,
     labels: bool = False,
+    threads: int = 1,
 ) -> tuple:
     """One compiled call for all ``inputs``: the raw result of ``core.offset_rings``."""
     if len(inputs) == 1:
@@ -147,8 +150,46 @@ def _run(
         _JOIN_CODE[join],
         lim,
         labels,
-        1,
+        threads,
     )
+
+
+#: shapely type ids the core reads and checks itself (offset_polygons)
+_POLYGONAL_IDS = (3, 6)
+#: a float64 ring as an (n, 2) ndarray: read as it is
+_F64 = np.dtype(np.float64)
+
+
+def _fast(obj: Any) -> bool:
+    """Is ``obj`` a shapely Polygon or MultiPolygon (read and checked by the core)?"""
+    import shapely
+
+    return isinstance(obj, shapely.Geometry) and shapely.lib.get_type_id(obj) in _POLYGONAL_IDS
+
+
+def _ring_arrays(a: np.ndarray) -> tuple:
+    """A float64 (n, 2) ring as the arrays of offset_polygons."""
+    xy = np.ascontiguousarray(a)
+    return xy, np.array([0, len(xy)], np.int64), _GEOM1, _GEOM1
+
+
+def _run_polygons(
+    arrays: tuple,
+    d: float,
+    tol: float | None,
+    approx: str,
+    join: str,
+    lim: float,
+    delta: float,
+    threads: int,
+) -> tuple:
+    """One compiled call reading, checking and offsetting shapely polygons (the arrays of
+    polygon_arrays); a geometry the core does not take has code OFFSET_INPUT."""
+    xy, ro, po, go = arrays
+    return core.offset_polygons(
+        xy, ro, po, go, d, math.nan if tol is None else tol, DEFAULT_TOLERANCE,
+        approx == "outer", _JOIN_CODE[join], lim, delta, threads,
+    )  # fmt: skip
 
 
 def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
@@ -199,31 +240,32 @@ def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: A
         )
 
 
-def _shapes(res: tuple, distance: Any, tolerance: Any) -> list:
+def _raise_all(info: np.ndarray, distance: Any, tolerance: Any) -> None:
+    """The error of the first polygonal set whose offset failed (in order)."""
+    if info[:, :2].any():
+        for st, cd, least in info[:, :3].tolist():
+            _raise_for(int(cd), int(st), least, distance, tolerance)
+
+
+def _shapes(res: tuple, distance: Any, tolerance: Any) -> np.ndarray:
     """Shapely results, one per polygonal set of the call (errors raised in order)."""
     import shapely
 
     xy, ro, po, go, info, _extra = res
-    if info[:, :2].any():
-        for g in range(len(go) - 1):
-            st, cd, least = info[g, :3].tolist()
-            _raise_for(int(cd), int(st), least, distance, tolerance)
+    _raise_all(info, distance, tolerance)
+    polys = shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
     if len(go) == 2 and len(po) == 2:  # one polygon of one ring or more
-        return [shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))[0]]
-    polys = (
-        shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
-        if len(po) > 1
-        else np.empty(0, object)
-    )
-    out: list[shapely.Geometry] = []
-    for g in range(len(go) - 1):
-        k0, k1 = int(go[g]), int(go[g + 1])
-        if k1 == k0:
-            out.append(shapely.Polygon())
-        elif k1 == k0 + 1:
-            out.append(polys[k0])
-        else:
-            out.append(shapely.MultiPolygon(list(polys[k0:k1])))
+        return polys
+    out = np.empty(len(go) - 1, dtype=object)
+    counts = np.diff(go)
+    one = counts == 1
+    out[one] = polys[go[:-1][one]]
+    out[counts == 0] = shapely.Polygon()
+    many = np.flatnonzero(counts > 1)
+    if len(many):
+        members = np.concatenate([polys[go[g] : go[g + 1]] for g in many])
+        which = np.repeat(np.arange(len(many)), counts[many])
+        out[many] = shapely.multipolygons(members, indices=which)
     return out
 
 
@@ -237,35 +279,63 @@ def _list_result(res: list) -> np.ndarray:
     return out
 
 
-def _batch(polys: list, fn_args: tuple) -> list:
-    """Offsets of a list of polygons (None stays None): one compiled call."""
+def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
+    """Offsets of a list of polygons (None stays None): shapely (multi)polygons in one
+    compiled call that reads and checks them; the rest, and what that call leaves to the
+    reader, through the reader in a second call. Reading errors first, then the
+    offsets' own, each in member order (as if every member went through the reader)."""
     d, tol, approx, join, lim, distance, tolerance = fn_args
+    extra = _distance_error(distance, d)
     idx = [k for k, g in enumerate(polys) if g is not None]
-    inputs = [_read(polys[k], "polygon") for k in idx]
+    fast = np.array([k for k in idx if _fast(polys[k])], np.int64)
+    info = np.zeros((len(polys), 4))
+    res_fast = None
+    if len(fast):
+        geoms = np.empty(len(fast), dtype=object)
+        geoms[:] = [polys[k] for k in fast]
+        res_fast = _run_polygons(polygon_arrays(geoms), d, tol, approx, join, lim, extra,
+                                 threads)  # fmt: skip
+        took = res_fast[4][:, 1] != core.OFFSET_INPUT
+        info[fast[took]] = res_fast[4][took]
+        res_fast, fast = _part(res_fast, took), fast[took]
+    slow = sorted(set(idx) - set(fast.tolist()))
+    inputs = [_read(polys[k], "polygon") for k in slow]  # reading errors, in order
+    res_slow = _run(inputs, d, tol, approx, join, lim, extra, threads=threads) if inputs else None
+    if res_slow is not None:
+        info[slow] = res_slow[4]
+    _raise_all(info, distance, tolerance)  # the offsets' errors, in order
     out: list = [None] * len(polys)
-    if inputs:
-        res = _run(inputs, d, tol, approx, join, lim, _distance_error(distance, d))
-        for k, g in zip(idx, _shapes(res, distance, tolerance)):
-            out[k] = g
+    for ks, res in ((fast.tolist(), res_fast), (slow, res_slow)):
+        if ks and res is not None:
+            for k, g in zip(ks, _shapes(res, distance, tolerance)):
+                out[k] = g
     return out
 
 
-def _map(polygon: Any, fn_args: tuple) -> Any:
-    """Offset one polygon, or each polygon of a container (same kind out)."""
-    if not is_many(polygon, empty=False):
-        return _batch([polygon], fn_args)[0]
+def _part(res: tuple, keep: np.ndarray) -> tuple:
+    """The results of the geometries ``keep`` selects (a boolean mask over them) with
+    their info rows: those left to the reader have no polygons."""
+    xy, ro, po, go, info, extra = res
+    if keep.all():
+        return res
+    counts = np.diff(go)[keep]
+    return xy, ro, po, np.r_[0, np.cumsum(counts)], info[keep], extra
+
+
+def _map(polygon: Any, fn_args: tuple, threads: int = 1) -> Any:
+    """Offset each polygon of a container (same kind out)."""
     from .._engine.containers import apply, boxed
 
     if boxed(polygon):
         # GeoSeries / GeometryArray / object arrays: the shared container rules
         return apply(
-            lambda ps: _list_result(_batch(list(ps), fn_args)),
+            lambda ps: _list_result(_batch(list(ps), fn_args, threads)),
             polygon,
             convex=False,
             names=("polygon",),
         )
     # lists and tuples of polygons (containers went through _engine.containers above)
-    res = _batch(list(polygon), fn_args)
+    res = _batch(list(polygon), fn_args, threads)
     if isinstance(polygon, np.ndarray):
         return _list_result(res)
     return tuple(res) if isinstance(polygon, tuple) else res
@@ -399,11 +469,79 @@ def offset(
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
     if not is_many(polygon, empty=False):
-        # one polygon: the shortest way through
-        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim,
-                   _distance_error(distance, d))  # fmt: skip
+        # one polygon: the shortest way through (read and checked by the core itself when
+        # shapely or a float64 ring, else by the reader)
+        extra = _distance_error(distance, d)
+        if _fast(polygon):
+            arrays = polygon_arrays(np.array([polygon], dtype=object))
+        elif type(polygon) is np.ndarray and polygon.dtype == _F64 and polygon.shape[1:] == (2,):
+            arrays = _ring_arrays(polygon)
+        else:
+            arrays = None
+        if arrays is not None:
+            res = _run_polygons(arrays, d, tol, approx, join, lim, extra, 1)
+            if res[4][0, 1] != core.OFFSET_INPUT:
+                return _shapes(res, distance, tolerance)[0]
+        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim, extra)
         return _shapes(res, distance, tolerance)[0]
     return _map(polygon, (d, tol, approx, join, lim, distance, tolerance))
+
+
+def offset_many(
+    polygons: Any,
+    distance: float,
+    *,
+    tolerance: float | None = None,
+    approx: str = "outer",
+    join: str = "round",
+    miter_limit: float = MITER_LIMIT,
+    threads: int = 1,
+) -> Any:
+    """Offset every polygon of a batch by one distance: :func:`offset` member by member,
+    in one compiled call.
+
+    Parameters
+    ----------
+    polygons : list, tuple, numpy object array, GeometryArray or GeoSeries
+        Polygons as :func:`offset` takes them (``None`` stays ``None``; in a GeoSeries,
+        GeometryArray or object array an empty member gives an empty Polygon). Shapely
+        polygons and multipolygons are read and checked by the compiled core itself,
+        with the GIL released; other members go through the reader first.
+    distance, tolerance, approx, join, miter_limit
+        As for :func:`offset`, the same for every member.
+    threads : int, default 1
+        Worker threads of the compiled call (the GIL is released).
+
+    Returns
+    -------
+    the container's kind
+        A list, tuple or object array of shapely results, or a GeometryArray or GeoSeries
+        (index and CRS kept), each member equal to ``offset(member, distance, ...)``.
+
+    Raises
+    ------
+    GeometryError
+        As :func:`offset`: the first bad member (reading errors first, then the offsets'
+        own), its position or index label in the message.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk, shapely
+    >>> parts = [shapely.box(0, 0, 2, 1), None, shapely.box(0, 0, 1, 1)]
+    >>> out = mk.offset_many(parts, 0.5, tolerance=1e-3, threads=2)
+    >>> out[1] is None, out[0].equals(mk.offset(parts[0], 0.5, tolerance=1e-3))
+    (True, True)
+    """
+    threads = _options.threads(threads)
+    d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
+    fn_args = (d, tol, approx, join, lim, distance, tolerance)
+    if not is_many(polygons, empty=True):
+        raise ShapeError(
+            "polygons: offset_many takes a list, tuple, array or GeoSeries of polygons",
+            argument="polygons",
+            hint="mk.offset offsets one polygon",
+        )
+    return _map(polygons, fn_args, threads)
 
 
 def _check_underflow(big: float) -> None:
