@@ -340,6 +340,27 @@ def test_offset_many_equals_single_calls():
     assert isinstance(arr, np.ndarray) and arr[1].is_empty
 
 
+def test_offset_many_per_member_distances():
+    geoms = [shapely.Polygon(L_SHAPE), None, SQUARE, shapely.Polygon(C_SHAPE)]
+    ds = [0.3, 9.0, -0.5, 0.7]
+    for tol in (None, [1e-3, 1.0, 2e-3, 1e-2]):
+        out = mk.offset_many(geoms, ds, tolerance=tol)
+        for k, (g, d) in enumerate(zip(geoms, ds)):
+            t = None if tol is None else tol[k]
+            assert (g is None and out[k] is None) or out[k].equals_exact(
+                mk.offset(g, d, tolerance=t), 0
+            )
+    gpd = pytest.importorskip("geopandas")
+    s = gpd.GeoSeries([shapely.Polygon(SQUARE), None, shapely.Polygon(), shapely.Polygon(TRI)])
+    out = mk.offset_many(s, np.array([0.5, 1.0, 2.0, -0.25]), threads=2)
+    assert out[1] is None and out[2].is_empty
+    assert out[3].equals_exact(mk.offset(s[3], -0.25), 0)
+    with pytest.raises(GeometryError, match="3 values for 4"):
+        mk.offset_many(geoms, [0.1, 0.2, 0.3])
+    with pytest.raises(GeometryError, match="not a float64"):
+        mk.offset_many(geoms[:1], [Fraction(1, 3)])
+
+
 def test_offset_many_geoseries():
     gpd = pytest.importorskip("geopandas")
     s = gpd.GeoSeries([shapely.Polygon(SQUARE), None, shapely.Polygon(L_SHAPE)],

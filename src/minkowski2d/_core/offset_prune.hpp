@@ -103,8 +103,8 @@ class Pruner {
     t_lo_ = s.r_check * (1 - 0x1p-30);
     n_ = n;
     local_ = crossings == nullptr;
-    if (!local_) partners(m, *crossings);
     const i64 s0 = local_ ? hull_point(cv.pts) : far_start(m, *crossings);
+    if (!local_) partners(m, s0, *crossings);
     where_.assign(m, -1);
     Q_.clear();
     qa_.clear();
@@ -170,7 +170,8 @@ class Pruner {
   }
 
   // crossing partners per segment (CSR)
-  void partners(i64 m, const std::vector<std::pair<i64, i64>>& crossings) {
+  // (each segment's in the order the pass meets them from s0: the stack's order)
+  void partners(i64 m, i64 s0, const std::vector<std::pair<i64, i64>>& crossings) {
     part_off_.assign(m + 1, 0);
     for (auto& c : crossings) {
       ++part_off_[c.first + 1];
@@ -183,6 +184,10 @@ class Pruner {
       part_[fill_[c.first]++] = c.second;
       part_[fill_[c.second]++] = c.first;
     }
+    auto pos = [&](i64 i) { return (i - s0 + m) % m; };
+    for (i64 k = 0; k < m; ++k)
+      std::sort(part_.begin() + part_off_[k], part_.begin() + part_off_[k + 1],
+                [&](i64 a, i64 b) { return pos(a) < pos(b); });
   }
 
   const std::vector<Pt>* v_ = nullptr;
@@ -212,8 +217,8 @@ class Pruner {
     where_[k] = (i64)e;
   }
 
-  // The stack positions of k's alive crossing partners, the most recent first, in cand_
-  // (false: none).
+  // The stack positions of k's alive crossing partners in cand_ (false: none): the
+  // local pass the most recent first, the global pass the deepest first.
   bool candidates(i64 k, Pt end) {
     cand_.clear();
     const i64 top = (i64)Q_.size() - 1;
@@ -230,11 +235,10 @@ class Pruner {
       }
       return !cand_.empty();
     }
-    for (i64 q = part_off_[k]; q < part_off_[k + 1]; ++q) {
+    for (i64 q = part_off_[k]; q < part_off_[k + 1]; ++q) {  // deepest first
       const i64 e = where_[part_[q]];
       if (e >= 0 && e < top && qorig_[e] == part_[q]) cand_.push_back(e);
     }
-    std::sort(cand_.begin(), cand_.end());
     return !cand_.empty();
   }
 
@@ -247,13 +251,14 @@ class Pruner {
       const Pt a = Q_[e], b = Q_[e + 1], c = Q_[top];
       if (!cross_properly(a, b, c, end)) continue;
       Pt X;
-      if (!crossing_point(a, b, c, end, X)) continue;
+      if (!crossing_estimate(a, b, c, end, X)) continue;
       const i64 fa = qsf_[e];
       // X on the result's boundary must keep r_lo from the polygon: a cut whose X comes
       // nearer to the features of A or B (a detour's spike cut near its vertex) would
       // fail the check of the result (a heuristic in double: the check decides)
       if (feature_d2(fa, X) < t_lo_ * t_lo_ || feature_d2(fb, X) < t_lo_ * t_lo_) continue;
       --tries;
+      if (!outwards(a, b, c, end, X)) continue;
       if (!near_feature(*v_, fa, X, t_up_) || !near_feature(*v_, fb, X, t_up_)) continue;
       const i64 ea = qa_[e + 1];  // A's end anchor: X's anchor
       // A up to X: anchors of A
@@ -284,28 +289,35 @@ class Pruner {
     return ex * ex + ey * ey;
   }
 
-  // X: a double right of (or on) both lines ab and cd, near their crossing (false when
-  // none is found within a few steps outwards)
-  static bool crossing_point(Pt a, Pt b, Pt c, Pt d, Pt& X) {
+  // The crossing of the lines ab and cd, rounded (long double; false when parallel or
+  // not finite)
+  static bool crossing_estimate(Pt a, Pt b, Pt c, Pt d, Pt& X) {
     using LD = long double;
     const LD ux = (LD)b.x - a.x, uy = (LD)b.y - a.y, wx = (LD)d.x - c.x, wy = (LD)d.y - c.y;
     const LD den = ux * wy - uy * wx;
     if (den == 0) return false;
     const LD t = (((LD)c.x - a.x) * wy - ((LD)c.y - a.y) * wx) / den;
-    const Pt X0{(double)(a.x + t * ux), (double)(a.y + t * uy)};
-    if (!(X0.x - X0.x == 0) || !(X0.y - X0.y == 0)) return false;
-    // outwards: along the sum of the right normals of the two directions
-    const double lu = std::hypot((double)ux, (double)uy), lw = std::hypot((double)wx, (double)wy);
-    const double nx = (double)uy / lu + (double)wy / lw, ny = -(double)ux / lu - (double)wx / lw;
-    const double nn = std::hypot(nx, ny);
+    X = Pt{(double)(a.x + t * ux), (double)(a.y + t * uy)};
+    return X.x - X.x == 0 && X.y - X.y == 0;
+  }
+
+  // X moved to a double right of (or on) both lines ab and cd: a few units in the last
+  // place outwards, along the sum of their right normals (false when none is found)
+  static bool outwards(Pt a, Pt b, Pt c, Pt d, Pt& X) {
+    if (orient(a, b, X) <= 0 && orient(c, d, X) <= 0) return true;
+    const double ux = b.x - a.x, uy = b.y - a.y, wx = d.x - c.x, wy = d.y - c.y;
+    const double lu = std::sqrt(ux * ux + uy * uy), lw = std::sqrt(wx * wx + wy * wy);
+    const double nx = uy / lu + wy / lw, ny = -ux / lu - wx / lw;
+    const double nn = std::sqrt(nx * nx + ny * ny);
+    if (!(nn > 0)) return false;
+    const Pt X0 = X;
     double step = std::max(std::fabs(X0.x), std::fabs(X0.y)) * 0x1p-50 + 0x1p-1060;
-    for (int i = 0; i < 40; ++i, step *= 2) {
-      const Pt c2 = i == 0 || !(nn > 0) ? X0 : Pt{X0.x + step * nx / nn, X0.y + step * ny / nn};
+    for (int i = 1; i < 40; ++i, step *= 2) {
+      const Pt c2{X0.x + step * nx / nn, X0.y + step * ny / nn};
       if (orient(a, b, c2) <= 0 && orient(c, d, c2) <= 0) {
         X = c2;
         return true;
       }
-      if (!(nn > 0)) return false;
     }
     return false;
   }

@@ -164,7 +164,9 @@ def _fast(obj: Any) -> bool:
     """Is ``obj`` a shapely Polygon or MultiPolygon (read and checked by the core)?"""
     import shapely
 
-    return isinstance(obj, shapely.Geometry) and shapely.lib.get_type_id(obj) in _POLYGONAL_IDS
+    return type(obj) in (shapely.Polygon, shapely.MultiPolygon) or (
+        isinstance(obj, shapely.Geometry) and shapely.lib.get_type_id(obj) in _POLYGONAL_IDS
+    )
 
 
 def _ring_arrays(a: np.ndarray) -> tuple:
@@ -184,10 +186,15 @@ def _run_polygons(
     threads: int,
 ) -> tuple:
     """One compiled call reading, checking and offsetting shapely polygons (the arrays of
-    polygon_arrays); a geometry the core does not take has code OFFSET_INPUT."""
+    polygon_arrays); a geometry the core does not take has code OFFSET_INPUT. ``d`` and
+    ``tol`` are one value for all or one per geometry (``tol`` NaN or None: the
+    default)."""
     xy, ro, po, go = arrays
+    g = len(go) - 1
+    ds = np.full(g, d) if np.ndim(d) == 0 else np.ascontiguousarray(d, np.float64)
+    ts = np.full(g, math.nan if tol is None else tol) if np.ndim(tol) == 0 else tol
     return core.offset_polygons(
-        xy, ro, po, go, d, math.nan if tol is None else tol, DEFAULT_TOLERANCE,
+        xy, ro, po, go, ds, np.ascontiguousarray(ts, np.float64), DEFAULT_TOLERANCE,
         approx == "outer", _JOIN_CODE[join], lim, delta, threads,
     )  # fmt: skip
 
@@ -241,10 +248,13 @@ def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: A
 
 
 def _raise_all(info: np.ndarray, distance: Any, tolerance: Any) -> None:
-    """The error of the first polygonal set whose offset failed (in order)."""
-    if info[:, :2].any():
-        for st, cd, least in info[:, :3].tolist():
-            _raise_for(int(cd), int(st), least, distance, tolerance)
+    """The error of the first polygonal set whose offset failed (in order; ``distance``
+    and ``tolerance`` as given, or one per row)."""
+    if (info[0, 0] or info[0, 1]) if len(info) == 1 else info[:, :2].any():
+        for k, (st, cd, least) in enumerate(info[:, :3].tolist()):
+            dk = distance[k] if np.ndim(distance) else distance
+            tk = tolerance[k] if np.ndim(tolerance) else tolerance
+            _raise_for(int(cd), int(st), least, dk, tk)
 
 
 def _shapes(res: tuple, distance: Any, tolerance: Any) -> np.ndarray:
@@ -282,10 +292,12 @@ def _list_result(res: list) -> np.ndarray:
 def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
     """Offsets of a list of polygons (None stays None): shapely (multi)polygons in one
     compiled call that reads and checks them; the rest, and what that call leaves to the
-    reader, through the reader in a second call. Reading errors first, then the
-    offsets' own, each in member order (as if every member went through the reader)."""
+    reader, through the reader (one call per distinct distance and tolerance). Reading
+    errors first, then the offsets' own, each in member order (as if every member went
+    through the reader). ``d``, ``tol`` (and ``distance``, ``tolerance``) are one value
+    for all or one per member."""
     d, tol, approx, join, lim, distance, tolerance = fn_args
-    extra = _distance_error(distance, d)
+    per = np.ndim(d) or np.ndim(tol)
     idx = [k for k, g in enumerate(polys) if g is not None]
     fast = np.array([k for k in idx if _fast(polys[k])], np.int64)
     info = np.zeros((len(polys), 4))
@@ -293,23 +305,39 @@ def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
     if len(fast):
         geoms = np.empty(len(fast), dtype=object)
         geoms[:] = [polys[k] for k in fast]
-        res_fast = _run_polygons(polygon_arrays(geoms), d, tol, approx, join, lim, extra,
-                                 threads)  # fmt: skip
+        res_fast = _run_polygons(
+            polygon_arrays(geoms), _pick(d, fast), _pick(tol, fast), approx, join, lim,
+            _distance_error(distance, d) if not per else 0.0, threads,
+        )  # fmt: skip
         took = res_fast[4][:, 1] != core.OFFSET_INPUT
         info[fast[took]] = res_fast[4][took]
         res_fast, fast = _part(res_fast, took), fast[took]
     slow = sorted(set(idx) - set(fast.tolist()))
     inputs = [_read(polys[k], "polygon") for k in slow]  # reading errors, in order
-    res_slow = _run(inputs, d, tol, approx, join, lim, extra, threads=threads) if inputs else None
-    if res_slow is not None:
-        info[slow] = res_slow[4]
+    groups: dict = {}
+    for k, inp in zip(slow, inputs):
+        tk = _pick(tol, k)
+        key = (float(_pick(d, k)), None if tk is None or tk != tk else float(tk)) if per else None
+        groups.setdefault(key, []).append((k, inp))
+    res_slow = []
+    for key, members in groups.items():
+        dk, tk = key if per else (d, tol)
+        res = _run([inp for _, inp in members], dk, tk, approx, join, lim,
+                   _distance_error(distance, d) if not per else 0.0, threads=threads)  # fmt: skip
+        info[[k for k, _ in members]] = res[4]
+        res_slow.append(([k for k, _ in members], res))
     _raise_all(info, distance, tolerance)  # the offsets' errors, in order
     out: list = [None] * len(polys)
-    for ks, res in ((fast.tolist(), res_fast), (slow, res_slow)):
+    for ks, res in [(fast.tolist(), res_fast)] + res_slow:
         if ks and res is not None:
             for k, g in zip(ks, _shapes(res, distance, tolerance)):
                 out[k] = g
     return out
+
+
+def _pick(v: Any, k: Any) -> Any:
+    """``v[k]`` of a per-member array, or ``v`` itself (one value for all)."""
+    return v[k] if np.ndim(v) else v
 
 
 def _part(res: tuple, keep: np.ndarray) -> tuple:
@@ -473,7 +501,7 @@ def offset(
         # shapely or a float64 ring, else by the reader)
         extra = _distance_error(distance, d)
         if _fast(polygon):
-            arrays = polygon_arrays(np.array([polygon], dtype=object))
+            arrays = polygon_arrays([polygon])
         elif type(polygon) is np.ndarray and polygon.dtype == _F64 and polygon.shape[1:] == (2,):
             arrays = _ring_arrays(polygon)
         else:
@@ -497,8 +525,8 @@ def offset_many(
     miter_limit: float = MITER_LIMIT,
     threads: int = 1,
 ) -> Any:
-    """Offset every polygon of a batch by one distance: :func:`offset` member by member,
-    in one compiled call.
+    """Offset every polygon of a batch: :func:`offset` member by member, in one compiled
+    call.
 
     Parameters
     ----------
@@ -507,8 +535,11 @@ def offset_many(
         GeometryArray or object array an empty member gives an empty Polygon). Shapely
         polygons and multipolygons are read and checked by the compiled core itself,
         with the GIL released; other members go through the reader first.
-    distance, tolerance, approx, join, miter_limit
-        As for :func:`offset`, the same for every member.
+    distance, tolerance : float or array_like of floats
+        As for :func:`offset`: one value for every member, or one per member (in the
+        container's order; ``tolerance`` None: the default for each).
+    approx, join, miter_limit
+        As for :func:`offset`.
     threads : int, default 1
         Worker threads of the compiled call (the GIL is released).
 
@@ -533,15 +564,54 @@ def offset_many(
     (True, True)
     """
     threads = _options.threads(threads)
-    d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
-    fn_args = (d, tol, approx, join, lim, distance, tolerance)
     if not is_many(polygons, empty=True):
         raise ShapeError(
             "polygons: offset_many takes a list, tuple, array or GeoSeries of polygons",
             argument="polygons",
             hint="mk.offset offsets one polygon",
         )
-    return _map(polygons, fn_args, threads)
+    if np.ndim(distance) == 0 and np.ndim(tolerance) == 0:
+        d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
+        return _map(polygons, (d, tol, approx, join, lim, distance, tolerance), threads)
+    # one distance (and tolerance) per member
+    n = len(polygons)
+    ds = _member_values(distance, n, "distance")
+    ts = _member_values(tolerance, n, "tolerance") if np.ndim(tolerance) else tolerance
+    _, _, lim = _check_options(1.0, None if np.ndim(ts) else ts, approx, join, miter_limit)
+    from .._engine.containers import boxed, unbox
+
+    box = unbox(polygons) if boxed(polygons) else None
+    if box is not None:  # the members apply() computes: not None, not empty
+        import shapely
+
+        geoms = box.geoms
+        valid = ~np.equal(geoms, None) & ~shapely.is_empty(geoms)  # type: ignore[call-overload]
+        ds = ds[valid]
+        ts = ts[valid] if np.ndim(ts) else ts
+    return _map(polygons, (ds, ts, approx, join, lim, ds, ts), threads)
+
+
+def _member_values(value: Any, n: int, name: str) -> np.ndarray:
+    """One float64 value per member (a distance, or a positive tolerance), each exactly
+    the value given."""
+    vals = list(value) if not isinstance(value, np.ndarray) else value.tolist()
+    if len(vals) != n:
+        raise ShapeError(
+            f"{name}: {len(vals)} values for {n} polygons", argument=name,
+            hint=f"give one {name} for all, or one per polygon",
+        )  # fmt: skip
+    out = np.empty(n, np.float64)
+    for k, v in enumerate(vals):
+        f = _finite_float(v, name)
+        if name == "tolerance" and f <= 0:
+            raise GeometryError(f"tolerance: must be positive, got {v!r}", argument=name)
+        if not isinstance(v, (float, np.floating)) and Fraction(f) != Fraction(v):
+            raise GeometryError(
+                f"{name}: {v!r} is not a float64 value", argument=name,
+                hint="per-polygon values must be floats",
+            )  # fmt: skip
+        out[k] = f
+    return out
 
 
 def _check_underflow(big: float) -> None:
