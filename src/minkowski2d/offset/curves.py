@@ -177,8 +177,8 @@ def _ring_arrays(a: np.ndarray) -> tuple:
 
 def _run_polygons(
     arrays: tuple,
-    d: float,
-    tol: float | None,
+    d: Any,
+    tol: Any,
     approx: str,
     join: str,
     lim: float,
@@ -301,7 +301,7 @@ def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
     idx = [k for k, g in enumerate(polys) if g is not None]
     fast = np.array([k for k in idx if _fast(polys[k])], np.int64)
     info = np.zeros((len(polys), 4))
-    res_fast = None
+    res_fast: Any = None
     if len(fast):
         geoms = np.empty(len(fast), dtype=object)
         geoms[:] = [polys[k] for k in fast]
@@ -501,7 +501,8 @@ def offset(
         # shapely or a float64 ring, else by the reader)
         extra = _distance_error(distance, d)
         if _fast(polygon):
-            arrays = polygon_arrays([polygon])
+            one: Any = [polygon]  # a list: polygon_arrays reads its one member directly
+            arrays = polygon_arrays(one)
         elif type(polygon) is np.ndarray and polygon.dtype == _F64 and polygon.shape[1:] == (2,):
             arrays = _ring_arrays(polygon)
         else:
@@ -517,9 +518,9 @@ def offset(
 
 def offset_many(
     polygons: Any,
-    distance: float,
+    distance: Any,
     *,
-    tolerance: float | None = None,
+    tolerance: Any = None,
     approx: str = "outer",
     join: str = "round",
     miter_limit: float = MITER_LIMIT,
@@ -576,7 +577,7 @@ def offset_many(
     # one distance (and tolerance) per member
     n = len(polygons)
     ds = _member_values(distance, n, "distance")
-    ts = _member_values(tolerance, n, "tolerance") if np.ndim(tolerance) else tolerance
+    ts: Any = _member_values(tolerance, n, "tolerance") if np.ndim(tolerance) else tolerance
     _, _, lim = _check_options(1.0, None if np.ndim(ts) else ts, approx, join, miter_limit)
     from .._engine.containers import boxed, unbox
 
