@@ -77,6 +77,33 @@ def bumpy(seed, n=80, amp=0.4):
     return shapely.Polygon(np.round(np.c_[rad * np.cos(a), rad * np.sin(a)], 6))
 
 
+def finger(w=0.8, length=6.0, k=40):
+    """A block with a finger w wide and `length` long, each side of k edges, a round tip."""
+    right = [(4 + w / 2, 2 + length * i / k) for i in range(k + 1)]
+    left = [(4 - w / 2, 2 + length * i / k) for i in range(k, -1, -1)]
+    tip = arc(4, 2 + length, w / 2, 0, math.pi, 12)[1:-1]
+    return shapely.Polygon([(0, 0), (8, 0), (8, 2)] + right + tip + left + [(0, 2)])
+
+
+def rounded_slot(w=1.0, depth=2.0, rc=0.2, k=10):
+    """A block with a slot w wide and `depth` deep, its corners rounded (radius rc, k
+    edges each)."""
+    x0, x1 = 4 - w / 2, 4 + w / 2
+    pts = [(0, 0), (8, 0), (8, 4), (x1 + rc, 4)]
+    pts += arc(x1 + rc, 4 - rc, rc, math.pi / 2, math.pi, k)[1:]
+    pts += arc(x1 - rc, 4 - depth + rc, rc, 0, -math.pi / 2, k)
+    pts += arc(x0 + rc, 4 - depth + rc, rc, -math.pi / 2, -math.pi, k)[1:]
+    pts += arc(x0 - rc, 4 - rc, rc, 0, math.pi / 2, k)[1:]
+    return shapely.Polygon(pts + [(0, 4)])
+
+
+def band(r0=3.0, w=0.6, k=60):
+    """A half ring w wide, both sides of k edges."""
+    return shapely.Polygon(
+        arc(0, 0, r0 + w / 2, 0, math.pi, k) + arc(0, 0, r0 - w / 2, math.pi, 0, k)
+    )
+
+
 NAMED = {
     "rounded_notch": shapely.Polygon(rounded_notch()),
     "keyhole": keyhole_polygon(),
@@ -86,6 +113,9 @@ NAMED = {
     "holed_bumpy": shapely.Polygon(
         bumpy(2).exterior.coords, [np.asarray(bumpy(3, 60, 0.3).exterior.coords)[::-1] * 0.5]
     ),
+    "finger": finger(),
+    "rounded_slot": rounded_slot(),
+    "band": band(),
 }
 
 
@@ -103,6 +133,30 @@ def test_named_swallowtails_one_sided(name, distance, approx):
         assert out.equals(mk.offset(ring, distance, tolerance=eps, approx=approx))
 
 
+@pytest.mark.parametrize(
+    "name, distance",
+    [("finger", -0.42), ("finger", -0.399), ("finger", -0.401), ("rounded_slot", 0.6),
+     ("rounded_slot", 0.501), ("rounded_slot", 0.499), ("band", -0.301), ("band", -0.299),
+     ("band", 0.6)],
+)  # fmt: skip
+@pytest.mark.parametrize("approx", ["outer", "inner"])
+def test_strips_one_sided(name, distance, approx):
+    """A strip narrower than 2r (a finger or band shrunk, a slot grown) is a loop whose
+    piece only the zipper certifies (rungs with middles); just wider, it must stay."""
+    check_offset(NAMED[name], distance, 1e-3 * abs(distance), approx)
+
+
+@pytest.mark.parametrize("half", [0.5 - 1e-9, 0.5, 0.5 + 1e-9])
+@pytest.mark.parametrize("approx", ["outer", "inner"])
+def test_narrow_shrinks(half, approx):
+    """A set whose box is narrower than 2r shrinks to nothing (decided from the box,
+    before any curve); at 2r or just wider the offset runs as usual."""
+    g = shapely.Polygon([(0, 0), (7, 0), (7, 0.4), (3, 0.4), (3, 1), (0, 1)])
+    out = check_offset(g, -half, 1e-3 * half, approx)
+    if half > 0.5:
+        assert out.is_empty
+
+
 @pytest.mark.parametrize("scale", [2.0**-500, 2.0**500])
 @pytest.mark.parametrize("name", ["rounded_notch", "keyhole", "comb"])
 def test_swallowtails_far_from_one(scale, name):
@@ -118,7 +172,7 @@ def test_swallowtails_far_from_one(scale, name):
 def wiggly(draw):
     """Outlines that make offset curves loop: bumps and notches of random size along a
     circle, a comb, a rounded concave corner, or a keyhole, scaled."""
-    kind = draw(st.sampled_from(["bumpy", "comb", "notch", "keyhole"]))
+    kind = draw(st.sampled_from(["bumpy", "comb", "notch", "keyhole", "finger", "slot"]))
     if kind == "bumpy":
         g = bumpy(draw(st.integers(0, 10**6)), draw(st.integers(12, 90)),
                   draw(st.floats(0.05, 1.5)))  # fmt: skip
@@ -126,6 +180,11 @@ def wiggly(draw):
         g = comb(draw(st.integers(2, 12)), draw(st.floats(0.05, 0.5)), draw(st.floats(0.05, 0.5)))
     elif kind == "notch":
         g = NAMED["rounded_notch"]
+    elif kind == "finger":
+        g = finger(draw(st.floats(0.1, 2.0)), draw(st.floats(0.5, 8.0)), draw(st.integers(1, 60)))
+    elif kind == "slot":
+        g = rounded_slot(draw(st.floats(0.6, 2.0)), draw(st.floats(0.5, 3.5)),
+                         draw(st.floats(0.01, 0.25)), draw(st.integers(1, 16)))  # fmt: skip
     else:
         g = NAMED["keyhole"]
     if not g.is_valid:

@@ -18,12 +18,17 @@
 // new segment X -> end of B, whose ring path runs from A's end anchor to B's. The chain
 // identity holds again, so the region of the new curve is P plus the new pieces
 // (grow; a shrink removes them). Each new piece is certified exactly before the cut is
-// made: it must be a simple counter-clockwise polygon within t_up of the polygon, shown
-// by a point O (the float centroid of its vertices) such that every triangle O, g_m,
-// g_{m+1} turns counter-clockwise, the polygon turns once around O (so it is star-shaped
-// from O, hence simple), and the three corners of every triangle lie within t_up of one
-// convex feature of the ring (an edge, or a vertex and so its two edges): g_m and
-// g_{m+1} are known to (the features kept with each point and segment), O is checked.
+// made: its boundary must be the sum of the boundaries of triangles that each turn
+// counter-clockwise (or are flat) and whose three corners lie within t_up of one convex
+// feature of the ring (an edge, or a vertex and so its two edges; the features kept with
+// each point and segment say which are known, the others are checked). Then the piece's
+// winding number is a sum of 0s and 1s: never negative, and nonzero only inside a
+// triangle, within t_up of the polygon. Three decompositions are tried: the fan from the
+// float centroid O (triangles O, g_m, g_m+1); the zipper (zip_ok: the ring path walked
+// from its middle towards both ends, cut by rungs whose middles are extra corners, for a
+// strip narrower than 2 t_up that no triangulation of its vertices alone certifies);
+// ear clipping. A triangle at a short edge may take an edge a few along the ring
+// (tri_near).
 // X itself is a double right of both segments (outwards: the region only grows by the
 // sliver) checked within t_up of both segments' features. So the pruned result still
 // lies within t_up of the polygon: the upper half of the guarantee holds by
@@ -38,11 +43,14 @@
 // r_lo. When the check fails the offset is computed again without pruning; no
 // heuristic decides a result.
 //
-// Which loops: segments are taken in order from a point of the curve's convex hull (on
-// the result's outer boundary, so never inside a loop); a segment that crosses segments
-// still on the stack is cut at the deepest crossing whose certificate holds (a few tried,
-// ring paths up to PRUNE_PATH edges), which removes the largest loop. Crossings that
-// remain (the curve closing a hole, two rings meeting) are the overlay's.
+// Which loops: segments are taken in order, by the local pass from a point of the
+// curve's convex hull (on the result's outer boundary, so never inside a loop), each
+// against the last stack segments near it, then by the global pass from the middle of the
+// longest run without crossings, each against its crossing partners still on the stack
+// (the deepest first): a segment is cut at the deepest crossing whose certificate holds
+// (a few tried, ring paths up to PRUNE_PATH edges), which removes the largest loop.
+// Crossings that remain (the curve closing a hole, two rings meeting, a loop whose piece
+// is not certified) are the overlay's.
 #pragma once
 
 #include <algorithm>
@@ -61,6 +69,7 @@ constexpr i64 PRUNE_PATH = 256;
 constexpr int PRUNE_TRIES = 4;
 constexpr i64 PRUNE_WINDOW = 24;  // the local pass: stack segments tested per segment
 constexpr i64 PRUNE_EARS = 128;  // ear clipping: pieces of at most this many points
+constexpr i64 PRUNE_NEAR = 4;    // a triangle near a short edge: the edges this far along
 
 // p within t of the feature f of the ring v (a vertex or a closed edge: convex sets)
 inline bool near_feature(const std::vector<Pt>& v, i64 f, Pt p, double t) {
@@ -152,25 +161,25 @@ class Pruner {
   // The middle of the longest run of segments without a crossing (a loop seldom spans
   // it, so a cut seldom has to wrap around the start).
   i64 far_start(i64 m, const std::vector<std::pair<i64, i64>>& crossings) {
-    fill_.clear();
-    for (auto& c : crossings) {
-      fill_.push_back(c.first);
-      fill_.push_back(c.second);
-    }
-    std::sort(fill_.begin(), fill_.end());
-    i64 best = -1, at = 0;
-    for (std::size_t q = 0; q < fill_.size(); ++q) {
-      const i64 a = fill_[q], b = q + 1 < fill_.size() ? fill_[q + 1] : fill_[0] + m;
-      if (b - a > best) {
-        best = b - a;
-        at = (a + (b - a) / 2 + 1) % m;
+    where_.assign(m, 0);  // (scratch: has a crossing)
+    for (auto& c : crossings) where_[c.first] = where_[c.second] = 1;
+    i64 first = -1, prev = -1, best = -1, at = 0;
+    for (i64 k = 0; k < m; ++k) {
+      if (!where_[k]) continue;
+      if (first < 0) first = k;
+      if (prev >= 0 && k - prev > best) {
+        best = k - prev;
+        at = (prev + (k - prev) / 2 + 1) % m;
       }
+      prev = k;
     }
+    if (first >= 0 && first + m - prev > best) at = (prev + (first + m - prev) / 2 + 1) % m;
     return at;
   }
 
-  // crossing partners per segment (CSR)
-  // (each segment's in the order the pass meets them from s0: the stack's order)
+  // crossing partners per segment (CSR), each segment's in the order the pass meets them
+  // from s0 (the stack's order): the relation is symmetric, so taking the segments j in
+  // that order and appending j to the lists of its partners sorts every list (linear)
   void partners(i64 m, i64 s0, const std::vector<std::pair<i64, i64>>& crossings) {
     part_off_.assign(m + 1, 0);
     for (auto& c : crossings) {
@@ -178,16 +187,18 @@ class Pruner {
       ++part_off_[c.second + 1];
     }
     for (i64 k = 0; k < m; ++k) part_off_[k + 1] += part_off_[k];
-    part_.resize(part_off_[m]);
-    fill_.assign(part_off_.begin(), part_off_.end() - 1);
+    fill_.resize(part_off_[m]);  // unsorted lists
+    cand_.assign(part_off_.begin(), part_off_.end() - 1);
     for (auto& c : crossings) {
-      part_[fill_[c.first]++] = c.second;
-      part_[fill_[c.second]++] = c.first;
+      fill_[cand_[c.first]++] = c.second;
+      fill_[cand_[c.second]++] = c.first;
     }
-    auto pos = [&](i64 i) { return (i - s0 + m) % m; };
-    for (i64 k = 0; k < m; ++k)
-      std::sort(part_.begin() + part_off_[k], part_.begin() + part_off_[k + 1],
-                [&](i64 a, i64 b) { return pos(a) < pos(b); });
+    part_.resize(part_off_[m]);
+    cand_.assign(part_off_.begin(), part_off_.end() - 1);
+    for (i64 t = 0; t < m; ++t) {
+      const i64 j = (s0 + t) % m;
+      for (i64 q = part_off_[j]; q < part_off_[j + 1]; ++q) part_[cand_[fill_[q]]++] = j;
+    }
   }
 
   const std::vector<Pt>* v_ = nullptr;
@@ -202,7 +213,7 @@ class Pruner {
   std::vector<i64> qa_, qpf_, qsf_, qorig_;
   // scratch of the certificates
   std::vector<Pt> g_;
-  std::vector<i64> gf_, gr_, gp_, nx_, pv_;
+  std::vector<i64> gf_, gr_, gp_, nx_, pv_, fa_, fc_;
   void push_point(Pt p, i64 a, i64 f) {
     Q_.push_back(p);
     qa_.push_back(a);
@@ -247,18 +258,22 @@ class Pruner {
   bool try_cuts(i64 k, Pt end, i64 end_anc, i64 end_pf, i64 fb, int& tries) {
     const i64 top = (i64)Q_.size() - 1;
     for (i64 e : cand_) {
+      Pt X;
       if (tries <= 0) break;
       const Pt a = Q_[e], b = Q_[e + 1], c = Q_[top];
-      if (!cross_properly(a, b, c, end)) continue;
-      Pt X;
-      if (!crossing_estimate(a, b, c, end, X)) continue;
       const i64 fa = qsf_[e];
       // X on the result's boundary must keep r_lo from the polygon: a cut whose X comes
       // nearer to the features of A or B (a detour's spike cut near its vertex) would
-      // fail the check of the result (a heuristic in double: the check decides)
+      // fail the check of the result (a heuristic in double, first: most crossings inside
+      // a swallowed loop are such; the check decides)
+      if (!crossing_double(a, b, c, end, X)) continue;
       if (feature_d2(fa, X) < t_lo_ * t_lo_ || feature_d2(fb, X) < t_lo_ * t_lo_) continue;
+      if (!cross_properly(a, b, c, end)) continue;
+      if (!crossing_estimate(a, b, c, end, X)) continue;
       --tries;
       if (!outwards(a, b, c, end, X)) continue;
+      // (rounded onto an end: the cut would leave a segment of no length)
+      if ((X.x == a.x && X.y == a.y) || (X.x == end.x && X.y == end.y)) continue;
       if (!near_feature(*v_, fa, X, t_up_) || !near_feature(*v_, fb, X, t_up_)) continue;
       const i64 ea = qa_[e + 1];  // A's end anchor: X's anchor
       // A up to X: anchors of A
@@ -287,6 +302,16 @@ class Pruner {
     const double L = dx * dx + dy * dy, u = L > 0 ? std::clamp((px * dx + py * dy) / L, 0.0, 1.0) : 0.0;
     const double ex = px - u * dx, ey = py - u * dy;
     return ex * ex + ey * ey;
+  }
+
+  // The crossing of the lines ab and cd, roughly (double; false when parallel or not
+  // finite)
+  static bool crossing_double(Pt a, Pt b, Pt c, Pt d, Pt& X) {
+    const double ux = b.x - a.x, uy = b.y - a.y, wx = d.x - c.x, wy = d.y - c.y;
+    const double den = ux * wy - uy * wx;
+    const double t = ((c.x - a.x) * wy - (c.y - a.y) * wx) / den;
+    X = Pt{a.x + t * ux, a.y + t * uy};
+    return X.x - X.x == 0 && X.y - X.y == 0;
   }
 
   // The crossing of the lines ab and cd, rounded (long double; false when parallel or
@@ -368,11 +393,14 @@ class Pruner {
     bool flat = true;  // no area (a spike): winding number 0 everywhere, nothing to show
     for (std::size_t i = 2; i < k && flat; ++i) flat = orient(g_[0], g_[1], g_[i]) == 0;
     if (flat) return true;
-    return fan_ok() || ears_ok();
+    if (fan_ok()) return true;
+    if (zip_ok()) return true;
+    return ears_ok();
   }
 
   // The fan from the centroid O: every triangle O, g_i, g_i+1 counter-clockwise or flat,
-  // and O within t_up of the feature of the edge g_i -> g_i+1.
+  // and O within t_up of the feature of the edge g_i -> g_i+1 (else the triangle within
+  // t_up of another edge: tri_cert).
   bool fan_ok() {
     const std::size_t k = g_.size();
     double ox = 0, oy = 0;
@@ -387,12 +415,104 @@ class Pruner {
     for (std::size_t i = 0; i < k; ++i) {
       if (orient(O, g_[i], g_[(i + 1) % k]) == 0) continue;
       const i64 f = gf_[i], j = f >> 1;  // a vertex: either of its edges (they contain it)
-      const bool ok = (f & 1) ? near_feature(*v_, edge_feature(j), O, t_up_) ||
-                                    near_feature(*v_, edge_feature((j + n_ - 1) % n_), O, t_up_)
-                              : near_feature(*v_, f, O, t_up_);
+      bool ok = (f & 1) ? near_feature(*v_, edge_feature(j), O, t_up_) ||
+                              near_feature(*v_, edge_feature((j + n_ - 1) % n_), O, t_up_)
+                        : near_feature(*v_, f, O, t_up_);
+      // a sliver at a short edge: the longer edges beside it
+      if (!ok) ok = tri_cert(-1, O, (i64)i, g_[i], (i64)((i + 1) % k), g_[(i + 1) % k]);
       if (!ok) return false;
     }
     return true;
+  }
+
+  // The zipper: the piece's ring path walked from its middle edge towards both ends at
+  // once, the piece cut by rungs g_l -- g_r with a point M at each rung's middle (any
+  // double: the chains telescope to the piece's boundary exactly). A step takes the
+  // pentagon of the old rung (l, M, r), a boundary edge and the new rung in three
+  // triangles; at the path's ends the rest (the cap: the curve points) is a fan from the
+  // last M. Every triangle must turn counter-clockwise (or be flat) and lie within t_up of
+  // one edge (tri_cert): a strip narrower than 2 t_up, which no triangulation of its
+  // vertices alone certifies.
+  bool zip_ok() {
+    const i64 k = (i64)g_.size();
+    i64 a0 = -1;  // the ring path: a0 .. b0 (cyclic), curve points after b0
+    for (i64 i = 0; i < k && a0 < 0; ++i)
+      if (gr_[i] < 0 && gr_[(i + 1) % k] >= 0) a0 = (i + 1) % k;
+    if (a0 < 0) return false;
+    i64 b0 = a0;
+    while (gr_[(b0 + 1) % k] >= 0 && (b0 + 1) % k != a0) b0 = (b0 + 1) % k;
+    const i64 len = (b0 - a0 + k) % k;
+    auto mid = [](Pt a, Pt b) { return Pt{0.5 * a.x + 0.5 * b.x, 0.5 * a.y + 0.5 * b.y}; };
+    auto d2 = [](Pt a, Pt b) { return (a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y); };
+    i64 l = (a0 + len / 2) % k, r = l;
+    Pt M = g_[l];
+    if (len > 0) r = (l + 1) % k;
+    while (l != a0 || r != b0) {
+      const i64 l1 = (l + k - 1) % k, r1 = (r + 1) % k;
+      const bool left = r == b0 || (l != a0 && d2(g_[l1], g_[r]) <= d2(g_[l], g_[r1]));
+      if (left) {
+        const Pt N = mid(g_[l1], g_[r]);
+        if (!tri_cert(l1, g_[l1], l, g_[l], -1, N) || !tri_cert(l, g_[l], -1, M, -1, N) ||
+            !tri_cert(-1, M, r, g_[r], -1, N))
+          return false;
+        l = l1;
+        M = N;
+      } else {
+        const Pt N = mid(g_[l], g_[r1]);
+        if (!tri_cert(r, g_[r], r1, g_[r1], -1, N) || !tri_cert(-1, M, r, g_[r], -1, N) ||
+            !tri_cert(l, g_[l], -1, M, -1, N))
+          return false;
+        r = r1;
+        M = N;
+      }
+    }
+    for (i64 t = len, i = b0; t < k; ++t, i = (i + 1) % k)  // the cap: edges b0 .. a0
+      if (!tri_cert(-1, M, i, g_[i], (i + 1) % k, g_[(i + 1) % k])) return false;
+    return true;
+  }
+
+  // A triangle of a piece's decomposition: corners (i, p) with i the point of g_ or -1
+  // (an extra corner: a rung's middle); counter-clockwise or flat, and within t_up of one
+  // edge: one that a corner is known to be near, or one beside those (tri_near).
+  bool tri_cert(i64 i0, Pt p0, i64 i1, Pt p1, i64 i2, Pt p2) {
+    const int o = orient(p0, p1, p2);
+    if (o < 0) return false;
+    if (o == 0) return true;
+    const i64 id[3] = {i0, i1, i2};
+    const Pt tp[3] = {p0, p1, p2};
+    const i64 k = (i64)g_.size();
+    i64 cand[18];
+    int nc = 0;
+    auto add = [&](i64 f) {
+      if (f & 1) {
+        cand[nc++] = edge_feature(f >> 1);
+        cand[nc++] = edge_feature(((f >> 1) + n_ - 1) % n_);
+      } else {
+        cand[nc++] = f;
+      }
+    };
+    for (int u = 0; u < 3; ++u) {
+      const i64 y = id[u];
+      if (y < 0) continue;
+      if (gr_[y] >= 0) {
+        add(vertex_feature(gr_[y]));
+      } else {
+        add(gp_[y]);
+        add(gf_[y]);
+        add(gf_[(y + k - 1) % k]);
+      }
+    }
+    if (nc == 0) return false;
+    std::sort(cand, cand + nc);
+    nc = (int)(std::unique(cand, cand + nc) - cand);
+    auto known = [&](int u, i64 e) {
+      const i64 y = id[u];
+      if (y < 0) return false;
+      if (gr_[y] >= 0) return feature_in(vertex_feature(gr_[y]), e, n_);
+      return feature_in(gp_[y], e, n_) || feature_in(gf_[y], e, n_) ||
+             feature_in(gf_[(y + k - 1) % k], e, n_);
+    };
+    return tri_near(tp, cand, nc, known);
   }
 
   // Ear clipping (the ears chosen in float, each certified exactly): every triangle
@@ -402,6 +522,8 @@ class Pruner {
     if (k > PRUNE_EARS) return false;
     nx_.resize(k);
     pv_.resize(k);
+    fa_.assign(k, -1);  // the neighbours with which an ear failed (it fails again)
+    fc_.assign(k, -1);
     for (i64 i = 0; i < k; ++i) {
       nx_[i] = (i + 1) % k;
       pv_[i] = (i + k - 1) % k;
@@ -412,7 +534,15 @@ class Pruner {
       for (i64 idle = 0; left > 3 && idle <= left;) {
         const i64 a = pv_[i], c = nx_[i];
         const bool ring = gr_[a] >= 0 && gr_[i] >= 0 && gr_[c] >= 0;
-        if ((phase == 1 || ring) && ear(a, i, c) && tri_ok(a, i, c)) {
+        bool ok = false;
+        if ((phase == 1 || ring) && !(fa_[i] == a && fc_[i] == c)) {
+          ok = ear(a, i, c) && tri_ok(a, i, c);
+          if (!ok) {
+            fa_[i] = a;
+            fc_[i] = c;
+          }
+        }
+        if (ok) {
           nx_[a] = c;
           pv_[c] = a;
           --left;
@@ -424,8 +554,7 @@ class Pruner {
         ++idle;
       }
     }
-    if (left > 3) 
-        return false;
+    if (left > 3) return false;
     const i64 a = pv_[i], c = nx_[i];
     if (orient(g_[a], g_[i], g_[c]) < 0 || !tri_ok(a, i, c)) 
         return false;
@@ -452,40 +581,29 @@ class Pruner {
   // points' features), or, three ring vertices, a circumradius of at most t_up (the
   // disks of radius t_up at the vertices then cover it).
   bool tri_ok(i64 a, i64 b, i64 c) {
-    const i64 id[3] = {a, b, c};
     if (orient(g_[a], g_[b], g_[c]) == 0) return true;
     if (gr_[a] >= 0 && gr_[b] >= 0 && gr_[c] >= 0 && circum_ok(g_[a], g_[b], g_[c], t_up_))
       return true;
-    i64 cand[12];
-    int nc = 0;
-    auto add = [&](i64 f) {  // an edge, or the two edges of a vertex
-      if (f & 1) {
-        cand[nc++] = edge_feature(f >> 1);
-        cand[nc++] = edge_feature(((f >> 1) + n_ - 1) % n_);
-      } else {
-        cand[nc++] = f;
-      }
-    };
-    for (int u = 0; u < 3; ++u) {
-      const i64 x = id[u];
-      if (gr_[x] >= 0) {
-        add(vertex_feature(gr_[x]));
-      } else {
-        add(gp_[x]);
-        add(gf_[x]);
-      }
-    }
-    for (int q = 0; q < nc; ++q) {
-      bool all = true;
-      for (int w = 0; w < 3 && all; ++w) {
-        const i64 y = id[w];
-        if (gr_[y] >= 0 ? feature_in(vertex_feature(gr_[y]), cand[q], n_)
-                        : feature_in(gp_[y], cand[q], n_) || feature_in(gf_[y], cand[q], n_))
-          continue;  // known
-        all = near_feature(*v_, cand[q], g_[y], t_up_);
-      }
-      if (all) return true;
-    }
+    return tri_cert(a, g_[a], b, g_[b], c, g_[c]);
+  }
+
+  // Is every corner of the triangle tp within t_up of one ring edge within PRUNE_NEAR
+  // edges of the features base (along the ring)? known(u, e): corner u is known to be
+  // (exact checks otherwise, after a float look that skips the edges far from any corner)
+  template <class Known>
+  bool tri_near(const Pt* tp, const i64* base, int nb, Known&& known) {
+    const double lim = t_up_ * t_up_ * (1 + 0x1p-20);
+    for (i64 w = 0; w <= PRUNE_NEAR; ++w)
+      for (int q = 0; q < nb; ++q)
+        for (int sg = -1; sg <= 1; sg += 2) {
+          if (w == 0 && sg == 1) continue;
+          const i64 j = (((base[q] >> 1) + sg * w) % n_ + n_) % n_, e = edge_feature(j);
+          bool all = true;
+          for (int u = 0; u < 3 && all; ++u) all = known(u, e) || feature_d2(e, tp[u]) <= lim;
+          if (!all) continue;
+          for (int u = 0; u < 3 && all; ++u) all = known(u, e) || near_feature(*v_, e, tp[u], t_up_);
+          if (all) return true;
+        }
     return false;
   }
 
