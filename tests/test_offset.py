@@ -336,6 +336,13 @@ def test_offset_many_equals_single_calls():
                 assert (a is None and b is None) or a.equals_exact(b, 0)
     out = mk.offset_many(tuple(geoms[:2]), 0.4, tolerance=1e-3)
     assert isinstance(out, tuple)
+    # shapely polygons only: one compiled call, the same results in the same kind
+    polys = [g for g in geoms if isinstance(g, shapely.Geometry)]
+    for kind in (list, tuple, lambda x: np.array(x, dtype=object)):
+        many = mk.offset_many(kind(polys), 0.4, tolerance=1e-3, threads=2)
+        assert type(many) is type(kind(polys))
+        for g, o in zip(polys, many):
+            assert o.equals_exact(mk.offset(g, 0.4, tolerance=1e-3), 0)
     arr = mk.offset_many(np.array([shapely.Polygon(SQUARE), shapely.Polygon()], object), 0.5)
     assert isinstance(arr, np.ndarray) and arr[1].is_empty
 
@@ -378,6 +385,17 @@ def test_offset_many_errors_in_order():
         mk.offset_many([shapely.Polygon(SQUARE), bowtie], 0.5, tolerance=1e-3)
     with pytest.raises(GeometryError, match="tolerance"):
         mk.offset_many([shapely.Polygon(SQUARE)], 0.5, tolerance=1e-30)
+    # an offset's own error names the member: its position, or its index label
+    far = shapely.box(0, 0, 1e9, 1e9)
+    for polys in ([shapely.Polygon(SQUARE), far], [None, shapely.Polygon(SQUARE), far]):
+        k = len(polys) - 1
+        with pytest.raises(GeometryError, match=rf"^polygon\[{k}\]: tolerance: 1e-12 ") as e:
+            mk.offset_many(polys, [0.5] * len(polys), tolerance=[1e-3] * k + [1e-12])
+        assert e.value.argument == f"polygon[{k}]"
+    gpd = pytest.importorskip("geopandas")
+    with pytest.raises(GeometryError, match=r"^polygon\['b'\]: tolerance"):
+        mk.offset_many(gpd.GeoSeries([shapely.Polygon(SQUARE), far], index=["a", "b"]), 0.5,
+                       tolerance=1e-9)  # fmt: skip
     with pytest.raises(GeometryError, match="offset_many takes"):
         mk.offset_many(shapely.Polygon(SQUARE), 0.5)
 

@@ -191,12 +191,17 @@ def _run_polygons(
     default)."""
     xy, ro, po, go = arrays
     g = len(go) - 1
-    ds = np.full(g, d) if np.ndim(d) == 0 else np.ascontiguousarray(d, np.float64)
-    ts = np.full(g, math.nan if tol is None else tol) if np.ndim(tol) == 0 else tol
     return core.offset_polygons(
-        xy, ro, po, go, ds, np.ascontiguousarray(ts, np.float64), DEFAULT_TOLERANCE,
-        approx == "outer", _JOIN_CODE[join], lim, delta, threads,
+        xy, ro, po, go, _per_geometry(d, g), _per_geometry(math.nan if tol is None else tol, g),
+        DEFAULT_TOLERANCE, approx == "outer", _JOIN_CODE[join], lim, delta, threads,
     )  # fmt: skip
+
+
+def _per_geometry(v: Any, g: int) -> np.ndarray:
+    """``v`` (one float, or one per geometry) as g float64 values."""
+    if type(v) is float or np.ndim(v) == 0:  # (type first: np.ndim costs a microsecond)
+        return np.array((v,), np.float64) if g == 1 else np.full(g, v, np.float64)
+    return np.ascontiguousarray(v, np.float64)
 
 
 def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
@@ -247,14 +252,24 @@ def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: A
         )
 
 
-def _raise_all(info: np.ndarray, distance: Any, tolerance: Any) -> None:
+def _raise_all(
+    info: np.ndarray, distance: Any, tolerance: Any, members: np.ndarray | None = None
+) -> None:
     """The error of the first polygonal set whose offset failed (in order; ``distance``
-    and ``tolerance`` as given, or one per row)."""
+    and ``tolerance`` as given, or one per row). ``members``: the rows' positions in a
+    batch, named in the error (``polygon[k]``)."""
     if (info[0, 0] or info[0, 1]) if len(info) == 1 else info[:, :2].any():
         for k, (st, cd, least) in enumerate(info[:, :3].tolist()):
-            dk = distance[k] if np.ndim(distance) else distance
+            dk = float(distance[k]) if np.ndim(distance) else distance
             tk = tolerance[k] if np.ndim(tolerance) else tolerance
-            _raise_for(int(cd), int(st), least, dk, tk)
+            tk = None if tk is None or tk != tk else (float(tk) if np.ndim(tolerance) else tk)
+            try:
+                _raise_for(int(cd), int(st), least, dk, tk)
+            except GeometryError as exc:
+                if members is None:
+                    raise
+                exc.argument = None  # kept in the message: polygon[k]: tolerance: ...
+                raise exc.renamed(f"polygon[{int(members[k])}]") from None
 
 
 def _shapes(res: tuple, distance: Any, tolerance: Any) -> np.ndarray:
@@ -270,7 +285,8 @@ def _shapes(res: tuple, distance: Any, tolerance: Any) -> np.ndarray:
     counts = np.diff(go)
     one = counts == 1
     out[one] = polys[go[:-1][one]]
-    out[counts == 0] = shapely.Polygon()
+    if not one.all():
+        out[counts == 0] = shapely.Polygon()
     many = np.flatnonzero(counts > 1)
     if len(many):
         members = np.concatenate([polys[go[g] : go[g + 1]] for g in many])
@@ -326,7 +342,7 @@ def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
                    _distance_error(distance, d) if not per else 0.0, threads=threads)  # fmt: skip
         info[[k for k, _ in members]] = res[4]
         res_slow.append(([k for k, _ in members], res))
-    _raise_all(info, distance, tolerance)  # the offsets' errors, in order
+    _raise_all(info, distance, tolerance, np.arange(len(polys)))  # the offsets' errors
     out: list = [None] * len(polys)
     for ks, res in [(fast.tolist(), res_fast)] + res_slow:
         if ks and res is not None:
@@ -350,10 +366,42 @@ def _part(res: tuple, keep: np.ndarray) -> tuple:
     return xy, ro, po, np.r_[0, np.cumsum(counts)], info[keep], extra
 
 
+def _all_polygons(polygon: Any) -> np.ndarray | None:
+    """The members of a list, tuple or 1-d object array when every one is a non-empty
+    shapely Polygon or MultiPolygon (as an object array), else None."""
+    import shapely
+
+    if type(polygon) in (list, tuple):
+        arr = np.empty(len(polygon), dtype=object)
+        arr[:] = polygon
+    elif type(polygon) is np.ndarray and polygon.dtype == object and polygon.ndim == 1:
+        arr = polygon
+    else:
+        return None
+    if not len(arr) or not shapely.is_geometry(arr).all():
+        return None
+    ids = shapely.get_type_id(arr)
+    if not ((ids == 3) | (ids == 6)).all() or shapely.is_empty(arr).any():
+        return None
+    return arr
+
+
 def _map(polygon: Any, fn_args: tuple, threads: int = 1) -> Any:
     """Offset each polygon of a container (same kind out)."""
     from .._engine.containers import apply, boxed
 
+    arr = _all_polygons(polygon)
+    if arr is not None:  # shapely polygons only: the shortest way, one compiled call
+        d, tol, approx, join, lim, distance, tolerance = fn_args
+        per = np.ndim(d) or np.ndim(tol)
+        got = _run_polygons(polygon_arrays(arr), d, tol, approx, join, lim,
+                            0.0 if per else _distance_error(distance, d), threads)  # fmt: skip
+        if not (got[4][:, 1] == core.OFFSET_INPUT).any():
+            _raise_all(got[4], distance, tolerance, np.arange(len(arr)))
+            out = _shapes(got, distance, tolerance)
+            if type(polygon) is list:
+                return out.tolist()
+            return tuple(out.tolist()) if type(polygon) is tuple else out
     if boxed(polygon):
         # GeoSeries / GeometryArray / object arrays: the shared container rules
         return apply(
@@ -581,7 +629,7 @@ def offset_many(
     _, _, lim = _check_options(1.0, None if np.ndim(ts) else ts, approx, join, miter_limit)
     from .._engine.containers import boxed, unbox
 
-    box = unbox(polygons) if boxed(polygons) else None
+    box = unbox(polygons) if _all_polygons(polygons) is None and boxed(polygons) else None
     if box is not None:  # the members apply() computes: not None, not empty
         import shapely
 
@@ -595,6 +643,10 @@ def offset_many(
 def _member_values(value: Any, n: int, name: str) -> np.ndarray:
     """One float64 value per member (a distance, or a positive tolerance), each exactly
     the value given."""
+    if isinstance(value, np.ndarray) and value.dtype == np.float64 and value.shape == (n,):
+        ok = np.isfinite(value).all() and (name != "tolerance" or (value > 0).all())
+        if ok:
+            return value.copy()
     vals = list(value) if not isinstance(value, np.ndarray) else value.tolist()
     if len(vals) != n:
         raise ShapeError(
