@@ -449,22 +449,30 @@ class Pruner {
     if (len > 0) r = (l + 1) % k;
     while (l != a0 || r != b0) {
       const i64 l1 = (l + k - 1) % k, r1 = (r + 1) % k;
-      const bool left = r == b0 || (l != a0 && d2(g_[l1], g_[r]) <= d2(g_[l], g_[r1]));
-      if (left) {
-        const Pt N = mid(g_[l1], g_[r]);
-        if (!tri_cert(l1, g_[l1], l, g_[l], -1, N) || !tri_cert(l, g_[l], -1, M, -1, N) ||
-            !tri_cert(-1, M, r, g_[r], -1, N))
-          return false;
-        l = l1;
-        M = N;
-      } else {
-        const Pt N = mid(g_[l], g_[r1]);
-        if (!tri_cert(r, g_[r], r1, g_[r1], -1, N) || !tri_cert(-1, M, r, g_[r], -1, N) ||
-            !tri_cert(l, g_[l], -1, M, -1, N))
-          return false;
-        r = r1;
-        M = N;
+      const bool pref = r == b0 || (l != a0 && d2(g_[l1], g_[r]) <= d2(g_[l], g_[r1]));
+      bool done = false;
+      for (int side = 0; side < 2 && !done; ++side) {  // the shorter rung, else the other
+        const bool left = side == 0 ? pref : !pref;
+        if (left ? l == a0 : r == b0) break;
+        if (left) {
+          const Pt N = mid(g_[l1], g_[r]);
+          done = tri_cert(l1, g_[l1], l, g_[l], -1, N) && tri_cert(l, g_[l], -1, M, -1, N) &&
+                 tri_cert(-1, M, r, g_[r], -1, N);
+          if (done) {
+            l = l1;
+            M = N;
+          }
+        } else {
+          const Pt N = mid(g_[l], g_[r1]);
+          done = tri_cert(r, g_[r], r1, g_[r1], -1, N) && tri_cert(-1, M, r, g_[r], -1, N) &&
+                 tri_cert(l, g_[l], -1, M, -1, N);
+          if (done) {
+            r = r1;
+            M = N;
+          }
+        }
       }
+      if (!done) return false;
     }
     for (i64 t = len, i = b0; t < k; ++t, i = (i + 1) % k)  // the cap: edges b0 .. a0
       if (!tri_cert(-1, M, i, g_[i], (i + 1) % k, g_[(i + 1) % k])) return false;
