@@ -706,13 +706,18 @@ def test_landmarks_and_dominance_keep_lengths_and_prune():
     assert nodes[False, False] > nodes[True, False] and nodes[False, False] > nodes[False, True]
 
 
-def test_no_landmarks_where_the_straight_line_is_nearly_shortest():
+def test_no_landmarks_where_they_would_not_pay():
     # small convex obstacles far apart: probe paths are barely longer than the distance,
-    # so no tables are made (the search does as well without them)
+    # so no tables are made; a perfect maze: long detours, but the bridges already keep
+    # the search on the path, so the tables do not cut the probes' nodes and are dropped
     obs = [sq(100 * i + 40, 100 * j + 40, 100 * i + 50, 100 * j + 50)
            for i in range(10) for j in range(10)]  # fmt: skip
     pl = mk.MotionPlanner(obs, workspace=(0, 0, 1000, 1000), method="mesh")
     assert len(pl._core.landmarks()[0]) == 0
+    maze = mk.MotionPlanner.from_grid(_maze(12, 3), method="mesh")
+    assert len(maze._core.landmarks()[0]) == 0
+    maze._core.make_landmarks(4, -1.0)  # forced: made and kept
+    assert len(maze._core.landmarks()[0]) == 4
 
 
 def test_read_scenario(tmp_path):

@@ -93,9 +93,9 @@ void bind_mesh_planner(nb::module_& m) {
       .def_rw("prune", &MP::prune)  // the bridge pruning (on; tests turn it off)
       // the landmark bounds (used by the queries; tests turn them off), the pruning of
       // dominated intervals likewise, the tables made again (n landmarks, where the
-      // probes' median detour reaches min_detour: -1 always) and the tables: (landmark
-      // ids (K,), the search vertices (n, 2), their distances to the landmarks (n, K);
-      // +inf: not reached; none: an empty array)
+      // probes' median detour reaches min_detour and the tables cut their nodes; -1:
+      // always) and the tables: (landmark ids (K,), the search vertices (n, 2), their
+      // distances to the landmarks (n, K); +inf: not reached; none: an empty array)
       .def_rw("use_landmarks", &MP::use_landmarks)
       .def_rw("use_dominance", &MP::use_dominance)
       .def("make_landmarks",

@@ -127,7 +127,8 @@ struct MeshPlanner {
   int n_landmarks = 8;
   // the tables are made only where shortest paths between probe pairs are longer than
   // the straight distance by this fraction on the median (elsewhere Polyanya's
-  // heuristic is nearly exact and the tables would not pay for their preparation)
+  // heuristic is nearly exact and the tables would not pay for their preparation), and
+  // kept only where they cut the probes' nodes (min_detour < 0: made and kept always)
   double min_detour = 0.02;
   bool use_landmarks = true;
   bool use_dominance = true;  // the pruning of dominated intervals (below)
@@ -150,7 +151,7 @@ struct MeshPlanner {
     return status;
   }
   void build_landmarks();  // after MeshSearch (its sweeps make the tables)
-  double probe_detour(const std::vector<int>& cand) const;
+  double probe(const std::vector<int>& cand, i64& expanded) const;
   void sweep(int v, std::vector<double>& dist, MeshScratch& MS) const;
 
   // vertex ids of the search: the mesh's, then the network's extra vertices
@@ -729,8 +730,10 @@ inline void MeshPlanner::sweep(int v, std::vector<double>& dist, MeshScratch& MS
 }
 
 // The median detour (length / distance - 1) of shortest paths between probe pairs of
-// the vertices cand, a fraction of the box's diagonal apart.
-inline double MeshPlanner::probe_detour(const std::vector<int>& cand) const {
+// the vertices cand, a fraction of the box's diagonal apart, and the nodes the searches
+// expanded (the same pairs at every call).
+inline double MeshPlanner::probe(const std::vector<int>& cand, i64& expanded) const {
+  expanded = 0;
   if (cand.size() < 2) return 0;
   PlanScratch S;
   S.init((std::size_t)base.items());
@@ -750,7 +753,9 @@ inline double MeshPlanner::probe_detour(const std::vector<int>& cand) const {
     const double e = dist(ux, uy, wx, wy);
     if (!(e >= diag / 16 && e <= diag / 4)) continue;
     int grp;
-    if (query(ux, uy, wx, wy, out, grp, S, MS) != PLAN_OK) continue;
+    const int st = query(ux, uy, wx, wy, out, grp, S, MS);
+    expanded += n_expanded;
+    if (st != PLAN_OK) continue;
     double len = 0;
     for (std::size_t i = 2; i + 1 < out.size(); i += 2)
       len += dist(out[i - 2], out[i - 1], out[i], out[i + 1]);
@@ -793,16 +798,14 @@ inline void MeshPlanner::build_landmarks() {
           v = M.pv[i];
         }
       }
-  {
-    std::vector<int> cand;
-    for (int p = 0; p < P; ++p)
-      if (br.pcomp[p] == big)
-        cand.insert(cand.end(), M.pv.begin() + M.poff[p], M.pv.begin() + M.poff[p + 1]);
-    std::sort(cand.begin(), cand.end());
-    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
-    const double det = probe_detour(cand);
-    if (det < min_detour) return;
-  }
+  std::vector<int> cand;
+  for (int p = 0; p < P; ++p)
+    if (br.pcomp[p] == big)
+      cand.insert(cand.end(), M.pv.begin() + M.poff[p], M.pv.begin() + M.poff[p + 1]);
+  std::sort(cand.begin(), cand.end());
+  cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  i64 before = 0, after = 0;
+  if (probe(cand, before) < min_detour) return;
   MeshScratch MS;
   std::vector<double> dist;
   for (int l = 0; l < n_landmarks && v >= 0; ++l) {
@@ -810,6 +813,10 @@ inline void MeshPlanner::build_landmarks() {
     lm.add(v, dist);
     v = lm.farthest(M.nvert());
   }
+  // kept where they cut the probes' nodes by a tenth (not where the bridges already
+  // confine the search to the path, as in a perfect maze)
+  probe(cand, after);
+  if (min_detour >= 0 && 10 * (before - after) < before) lm = MeshLandmarks{};
 }
 
 // ------------------------------------------------------------------------------------
