@@ -88,8 +88,8 @@ struct LandmarkQuery {
 
   // The target sees the vertices seen[k].first (straight, inside a convex cell or along
   // a zero-width segment) at lengths seen[k].second; scale: the scene's largest
-  // coordinate. A landmark that does not reach all of them is left out (lo = -inf,
-  // hi = +inf: it bounds nothing).
+  // coordinate. A landmark that does not reach all of them (the landmark and the target
+  // are in different parts) is left out (lo = -inf, hi = +inf: it bounds nothing).
   void target(const MeshLandmarks& T, const std::vector<std::pair<int, double>>& seen,
               double scale) {
     on = false;
@@ -104,7 +104,7 @@ struct LandmarkQuery {
         a = std::max(a, x - len);
         b = std::min(b, x + len);
       }
-      if (!(b < inf)) continue;
+      if (!(a < inf)) continue;  // some vertex the target sees is not reached
       lo[l] = a;
       hi[l] = b;
       on = true;
