@@ -808,15 +808,20 @@ inline void MeshPlanner::build_landmarks() {
   if (probe(cand, before) < min_detour) return;
   MeshScratch MS;
   std::vector<double> dist;
+  // kept where they cut the probes' nodes by a tenth (not where the bridges already
+  // confine the search to the path, as in a perfect maze): checked when half of them
+  // are made (the others are not made then), and at the end
+  auto pays = [&]() {
+    probe(cand, after);
+    return min_detour < 0 || 10 * (before - after) >= before;
+  };
   for (int l = 0; l < n_landmarks && v >= 0; ++l) {
     sweep(v, dist, MS);
     lm.add(v, dist);
     v = lm.farthest(M.nvert());
+    if (2 * (l + 1) == n_landmarks && !pays()) break;
   }
-  // kept where they cut the probes' nodes by a tenth (not where the bridges already
-  // confine the search to the path, as in a perfect maze)
-  probe(cand, after);
-  if (min_detour >= 0 && 10 * (before - after) < before) lm = MeshLandmarks{};
+  if (!pays()) lm = MeshLandmarks{};
 }
 
 // ------------------------------------------------------------------------------------
