@@ -805,15 +805,16 @@ inline void MeshPlanner::build_landmarks() {
   std::sort(cand.begin(), cand.end());
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
   i64 before = 0, after = 0;
-  if (probe(cand, before) < min_detour) return;
+  if (min_detour >= 0 && probe(cand, before) < min_detour) return;
   MeshScratch MS;
   std::vector<double> dist;
   // kept where they cut the probes' nodes by a tenth (not where the bridges already
   // confine the search to the path, as in a perfect maze): checked when half of them
   // are made (the others are not made then), and at the end
   auto pays = [&]() {
+    if (min_detour < 0) return true;
     probe(cand, after);
-    return min_detour < 0 || 10 * (before - after) >= before;
+    return 10 * (before - after) >= before;
   };
   for (int l = 0; l < n_landmarks && v >= 0; ++l) {
     sweep(v, dist, MS);
