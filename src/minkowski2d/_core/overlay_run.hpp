@@ -61,10 +61,8 @@ class Overlay {
     const i64 nv = (i64)av_.size();
     std::vector<char> used(nv, 0);
     for (const Piece& b : bnd_) used[b.from] = used[b.to] = 1;
-    for (i64 t = 0; t < nv; ++t) {
-      i64 v = sw_by_rank_[t];
+    for (i64 v = 0; v < nv; ++v)  // ids are sweep ranks
       if (used[v]) out.push_back(av_[v]);
-    }
   }
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
@@ -123,10 +121,8 @@ class Overlay {
   // ---- local state of a run (reused)
   std::vector<EdgeIn> ed_;        // input edges, local vertex ids
   std::vector<i64> vg_;           // local vertex -> global vertex (representative)
-  std::vector<i64> rank_;         // local vertex -> sweep position
   struct Split {
     i64 edge, node;  // node: local vertex id, or nv0 + new crossing
-    double k = 0, ke = 0;  // split(): position along the edge, approximate, and its bound
   };
   std::vector<Split> splits_;
   std::vector<i64> newv_;  // new crossing -> global vertex id
@@ -172,6 +168,7 @@ class Overlay {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
     over_ = false;
+    ordered_ = false;
     local_vertices(in);
     intersect();
     if (over_) {
@@ -187,6 +184,16 @@ class Overlay {
     windings();
     boundary();
   }
+
+  // cached approximations of an input edge's line and of a vertex (side_ev)
+  struct LLine {
+    FE ax, ay, bx, by;  // the line's two points (exact when e == 0)
+    bool plain;
+  };
+  struct LVert {
+    FE x, y;  // exact when plain (a point of two doubles)
+    bool plain;
+  };
 
   // step 1: input vertices sorted and merged; edges in local ids
   std::vector<i64> tmp_;
@@ -432,181 +439,207 @@ class Overlay {
     return node < nv0 ? vg_[node] : newv_[node - nv0];
   }
 
-  // step 3: splits sorted along their edges, equal ones united
+  // step 3: splits sorted along their edges, equal ones united. The splits of edge i are
+  // sk_[sstart_[i] .. sstart_[i + 1]), from v0 to v1.
+  struct SKey {
+    double k, ke;  // position along the edge (growing from v0 to v1), approximate, bound
+    i64 node;
+  };
+  std::vector<SKey> sk_;
+  std::vector<i64> sstart_, sfill_;
   std::vector<std::int8_t> edir_;
   void split() {
-    const i64 nv0 = (i64)vg_.size();
+    const i64 nv0 = (i64)vg_.size(), ne = (i64)ed_.size();
     uf_.resize(nv0 + newv_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
-    // each split edge's direction against its line (+1: v0 -> v1 runs along it)
-    edir_.resize(ed_.size());
-    for (std::size_t k = 0; k < splits_.size(); ++k)
-      if (k == 0 || splits_[k].edge != splits_[k - 1].edge) {
-        const EdgeIn& e = ed_[splits_[k].edge];
-        edir_[splits_[k].edge] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
-      }
-    // the position along the edge: its line's axis coordinate (as along() compares),
-    // times the sign that makes it grow from v0 to v1; certified apart -> no exact test
-    for (Split& sp : splits_) {
-      const EdgeIn& e = ed_[sp.edge];
+    // counting sort by edge
+    sstart_.assign(ne + 1, 0);
+    for (const Split& sp : splits_) ++sstart_[sp.edge + 1];
+    for (i64 i = 0; i < ne; ++i) sstart_[i + 1] += sstart_[i];
+    sfill_.assign(sstart_.begin(), sstart_.end() - 1);
+    sk_.resize(splits_.size());
+    for (const Split& sp : splits_) sk_[sfill_[sp.edge]++].node = sp.node;
+    edir_.resize(ne);
+    for (i64 i = 0; i < ne; ++i) {
+      const i64 a = sstart_[i], b = sstart_[i + 1];
+      if (a == b) continue;
+      const EdgeIn& e = ed_[i];
+      // the edge's direction against its line (+1: v0 -> v1 runs along it)
+      edir_[i] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
+      // the position along the edge: its line's axis coordinate (as along() compares),
+      // times the sign that makes it grow from v0 to v1; certified apart -> no exact test
       const P &p = g_.pts[g_.lines[e.line].a], &q = g_.pts[g_.lines[e.line].b];
       const bool ya = dd_eq(p.x, q.x);
-      const int sg = (ya ? dd_cmp(q.y, p.y) : dd_cmp(q.x, p.x)) * edir_[sp.edge];
-      const Vert& V = g_.verts[gid(sp.node)];
-      const FE c = ya ? V.y : V.x;
-      sp.k = sg > 0 ? c.v : -c.v;
-      sp.ke = c.e;
-    }
-    std::sort(splits_.begin(), splits_.end(), [&](const Split& a, const Split& b) {
-      if (a.edge != b.edge) return a.edge < b.edge;
-      if (a.node == b.node) return false;
-      const double gap = (a.ke + b.ke) * (1 + 0x1p-50);
-      if (b.k - a.k > gap) return true;
-      if (a.k - b.k > gap) return false;
-      const EdgeIn& e = ed_[a.edge];
-      // along the edge's own direction (v0 -> v1)
-      int s = along_s(e.line, gid(a.node), gid(b.node));
-      return s * edir_[a.edge] < 0;
-    });
-    for (std::size_t k = 1; k < splits_.size(); ++k) {
-      const Split &a = splits_[k - 1], &b = splits_[k];
-      if (a.edge == b.edge && a.node != b.node &&
-          along_s(ed_[a.edge].line, gid(a.node), gid(b.node)) == 0)
-        unite(a.node, b.node);
+      const int sg = (ya ? dd_cmp(q.y, p.y) : dd_cmp(q.x, p.x)) * edir_[i];
+      for (i64 t = a; t < b; ++t) {
+        const Vert& V = g_.verts[gid(sk_[t].node)];
+        const FE c = ya ? V.y : V.x;
+        sk_[t].k = sg > 0 ? c.v : -c.v;
+        sk_[t].ke = c.e;
+      }
+      const int dir = edir_[i];
+      auto less = [&](const SKey& x, const SKey& y) {
+        if (x.node == y.node) return false;
+        const double gap = (x.ke + y.ke) * (1 + 0x1p-50);
+        if (y.k - x.k > gap) return true;
+        if (x.k - y.k > gap) return false;
+        // along the edge's own direction (v0 -> v1)
+        return along_s(e.line, gid(x.node), gid(y.node)) * dir < 0;
+      };
+      if (b - a > 1) std::sort(sk_.begin() + a, sk_.begin() + b, less);
+      for (i64 t = a + 1; t < b; ++t) {
+        const SKey &x = sk_[t - 1], &y = sk_[t];
+        if (x.node == y.node || y.k - x.k > (x.ke + y.ke) * (1 + 0x1p-50)) continue;
+        if (along_s(e.line, gid(x.node), gid(y.node)) == 0) unite(x.node, y.node);
+      }
     }
     // representatives: roots; a new vertex united with an input one maps to it
   }
 
-  // step 4 prelude: local vertices of the arrangement in sweep order
-  std::vector<i64> lid_;  // node -> arrangement vertex (local), after union
+  // step 4 prelude: the arrangement's vertices, numbered in sweep order (an arrangement
+  // vertex's id is its rank: pieces sorted by their left vertex are in sweep order)
+  std::vector<i64> lid_;  // node -> arrangement vertex, after union
   std::vector<i64> av_;   // arrangement vertex -> global vertex id
+  struct NKey {
+    VKey k;
+    i64 node;
+  };
+  std::vector<NKey> nk_;
+  std::vector<LVert> lv2_;
+  bool ordered_ = false;  // order() has run: local vertex ids are arrangement ids
   void order() {
     const i64 nn = (i64)uf_.size(), nv0 = (i64)vg_.size();
-    lid_.assign(nn, -1);
-    av_.clear();
-    for (i64 node = 0; node < nn; ++node) {
-      i64 r = find(node);
-      if (lid_[r] < 0) {
-        lid_[r] = (i64)av_.size();
-        av_.push_back(gid(r));
-      }
-      lid_[node] = lid_[r];
-    }
-    const i64 m = (i64)av_.size();
+    // the new roots (crossings not united with an input vertex), sorted; the input
+    // vertices are roots already in sweep order (local_vertices): merged with them
+    nk_.clear();
+    for (i64 node = nv0; node < nn; ++node)
+      if (find(node) == node) nk_.push_back(NKey{vkey(gid(node)), node});
+    std::sort(nk_.begin(), nk_.end(),
+              [&](const NKey& a, const NKey& b) { return vkcmp(a.k, b.k) < 0; });
+    const i64 nnew = (i64)nk_.size(), m = nv0 + nnew;
     n_vertices = m;
-    lv_.resize(m);
-    for (i64 t = nv0; t < m; ++t) lv_[t] = lvert(av_[t]);
-    // the input vertices are roots, in sweep order (local_vertices); sort the new ones
-    // and merge
-    vk_.clear();
-    for (i64 t = nv0; t < m; ++t) vk_.push_back(vkey(av_[t]));
-    std::vector<i64>& tail = tmp_;
-    tail.resize(m - nv0);
-    std::iota(tail.begin(), tail.end(), nv0);
-    std::sort(tail.begin(), tail.end(),
-              [&](i64 a, i64 b) { return vkcmp(vk_[a - nv0], vk_[b - nv0]) < 0; });
-    rank_.resize(m);
+    lid_.resize(nn);
+    av_.resize(m);
+    lv2_.resize(m);
     i64 i = 0, j = 0, t = 0;
-    VKey hk{};
-    bool have = false;
-    while (i < nv0 || j < m - nv0) {
-      if (i < nv0 && !have) {
-        hk = vkey(av_[i]);
-        have = true;
-      }
-      bool take_head =
-          j >= m - nv0 || (i < nv0 && vkcmp(hk, vk_[tail[j] - nv0]) < 0);
-      if (take_head) {
-        rank_[i++] = t++;
-        have = false;
+    while (i < nv0 || j < nnew) {
+      bool take_input = j >= nnew || (i < nv0 && vkcmp(vkey(vg_[i]), nk_[j].k) < 0);
+      if (take_input) {
+        lid_[i] = t;
+        av_[t] = vg_[i];
+        lv2_[t] = lv_[i];
+        ++i;
       } else {
-        rank_[tail[j++]] = t++;
+        const i64 node = nk_[j].node;
+        lid_[node] = t;
+        av_[t] = nk_[j].k.g;
+        lv2_[t] = lvert(av_[t]);
+        ++j;
       }
+      ++t;
+    }
+    lv_.swap(lv2_);
+    ordered_ = true;
+    for (i64 node = nv0; node < nn; ++node) {
+      const i64 r = find(node);
+      if (r != node) lid_[node] = lid_[r];
     }
   }
 
-  // step 4: pieces
-  std::vector<Piece> raw_;
-  std::vector<std::pair<u64, std::uint32_t>> pkey_;
+  // step 4: pieces, grouped by their left vertex (ascending, so in sweep order), each
+  // group in slope order (bottom to top: the order the sweep inserts them in);
+  // pieces joining the same two vertices merged (weights added). pstart_[v] is the
+  // first piece of vertex v.
+  struct RawP {
+    i64 r, src;
+    int s, c;  // the line's direction (l -> r: +1), the signed weight crossing upwards
+    bool fwd;  // the edge runs l -> r
+  };
+  std::vector<RawP> raw_;
+  std::vector<i64> pstart_, pfill_;
+  // calls f(l, r, s, c) for every piece of input edge i (between consecutive splits)
+  template <class F>
+  void edge_pieces(i64 i, F&& f) const {
+    const EdgeIn& e = ed_[i];
+    // the line's own direction against the edge's
+    const int es = g_.along(e.line, vg_[e.v1], vg_[e.v0]);
+    i64 prev = lid_[e.v0];
+    auto emit = [&](i64 nxt) {
+      if (nxt == prev) return;
+      const bool fwd = prev < nxt;
+      // the line runs from l's side to r's side when the edge does (fwd) and the line
+      // runs along the edge (es > 0), or neither
+      f(fwd ? prev : nxt, fwd ? nxt : prev, (fwd == (es > 0)) ? 1 : -1, fwd);
+      prev = nxt;
+    };
+    for (i64 t = sstart_[i]; t < sstart_[i + 1]; ++t) emit(lid_[sk_[t].node]);
+    emit(lid_[e.v1]);
+  }
   void pieces() {
-    std::vector<Piece>& raw = raw_;
-    raw.clear();
-    raw.reserve(ed_.size() + splits_.size());  // the most there can be
-    std::size_t k = 0;
-    for (i64 i = 0; i < (i64)ed_.size(); ++i) {
-      const EdgeIn& e = ed_[i];
-      // the line's own direction against the edge's
-      int es = g_.along(e.line, vg_[e.v1], vg_[e.v0]);
-      i64 prev = lid_[e.v0];
-      auto emit = [&](i64 nxt) {
-        if (nxt == prev) return;
-        Piece pc;
-        bool fwd = rank_[prev] < rank_[nxt];
-        pc.l = fwd ? prev : nxt;
-        pc.r = fwd ? nxt : prev;
-        pc.line = e.line;
-        pc.src = i;
-        // the line runs from l's side to r's side when the edge does (fwd) and the line
-        // runs along the edge (es > 0), or neither
-        pc.s = (fwd == (es > 0)) ? 1 : -1;
-        int c = fwd ? e.w : -e.w;
-        pc.c0 = e.layer == 0 ? c : 0;
-        pc.c1 = e.layer == 1 ? c : 0;
-        pc.nl = e.layer == 2 ? 1 : 0;
-        pc.ld = e.layer == 2 ? (fwd ? 1 : -1) : 0;
-        pc.b0 = pc.b1 = 0;
-        raw.push_back(pc);
-        prev = nxt;
-      };
-      while (k < splits_.size() && splits_[k].edge == i) {
-        emit(lid_[splits_[k].node]);
-        ++k;
-      }
-      emit(lid_[e.v1]);
-    }
-    // sorted by (l, r) through small keys; pieces joining the same two vertices merged
-    pkey_.resize(raw.size());
-    for (std::size_t i = 0; i < raw.size(); ++i)
-      pkey_[i] = {((u64)raw[i].l << 32) | (u64)raw[i].r, (std::uint32_t)i};
-    std::sort(pkey_.begin(), pkey_.end());
+    const i64 m = (i64)av_.size(), ne = (i64)ed_.size();
+    // counting sort by the left vertex: count, then place
+    pstart_.assign(m + 1, 0);
+    for (i64 i = 0; i < ne; ++i)
+      edge_pieces(i, [&](i64 l, i64, int, bool) { ++pstart_[l + 1]; });
+    for (i64 v = 0; v < m; ++v) pstart_[v + 1] += pstart_[v];
+    raw_.resize(pstart_[m]);
+    pfill_.assign(pstart_.begin(), pstart_.end() - 1);
+    for (i64 i = 0; i < ne; ++i)
+      edge_pieces(i, [&](i64 l, i64 r, int s, bool fwd) {
+        raw_[pfill_[l]++] = RawP{r, i, s, fwd ? ed_[i].w : -ed_[i].w, fwd};
+      });
+    // each group: sorted by r (then by input edge, as placed), equal ones merged, then
+    // in slope order
     pcs_.clear();
-    pcs_.reserve(raw.size());
-    for (std::size_t i = 0; i < pkey_.size();) {
-      std::size_t j = i;
-      Piece pc = raw[pkey_[i].second];
-      pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.ld = 0;
-      for (; j < pkey_.size() && pkey_[j].first == pkey_[i].first; ++j) {
-        const Piece& q = raw[pkey_[j].second];
-        pc.c0 += q.c0;
-        pc.c1 += q.c1;
-        if (q.c0 < 0) pc.n0 -= q.c0;
-        if (q.nl && !pc.nl) pc.ld = q.ld;
-        pc.nl += q.nl;
+    pcs_.reserve(raw_.size());
+    for (i64 v = 0; v < m; ++v) {
+      const i64 a = pstart_[v], b = pstart_[v + 1];
+      pstart_[v] = (i64)pcs_.size();
+      if (b - a > 1)
+        std::sort(raw_.begin() + a, raw_.begin() + b, [](const RawP& x, const RawP& y) {
+          return x.r < y.r || (x.r == y.r && x.src < y.src);
+        });
+      for (i64 q = a; q < b;) {
+        Piece pc;
+        pc.l = v;
+        pc.r = raw_[q].r;
+        pc.src = raw_[q].src;
+        pc.line = ed_[pc.src].line;
+        pc.s = raw_[q].s;
+        pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.ld = pc.b0 = pc.b1 = 0;
+        i64 q1 = q;
+        for (; q1 < b && raw_[q1].r == pc.r; ++q1) {
+          const RawP& x = raw_[q1];
+          const int layer = ed_[x.src].layer;
+          if (layer == 0) pc.c0 += x.c;
+          if (layer == 1) pc.c1 += x.c;
+          if (layer == 0 && x.c < 0) pc.n0 -= x.c;
+          if (layer == 2) {
+            if (!pc.nl) pc.ld = x.fwd ? 1 : -1;  // the first line edge's direction
+            ++pc.nl;
+          }
+        }
+        // keep_zero_: a piece where rings meet from both sides stays (degenerate())
+        if (pc.c0 != 0 || pc.c1 != 0 || pc.nl != 0 || (keep_zero_ && q1 > q + 1))
+          pcs_.push_back(pc);
+        q = q1;
       }
-      // keep_zero_: a piece where rings meet from both sides stays (degenerate())
-      if (pc.c0 != 0 || pc.c1 != 0 || pc.nl != 0 || (keep_zero_ && j > i + 1))
-        pcs_.push_back(pc);
-      i = j;
+      const i64 p0 = pstart_[v], p1 = (i64)pcs_.size();
+      if (p1 - p0 > 1)
+        std::sort(pcs_.begin() + p0, pcs_.begin() + p1,
+                  [&](const Piece& x, const Piece& y) { return slope_below(x, y); });
     }
+    pstart_[m] = (i64)pcs_.size();
     n_edges = (i64)pcs_.size();
   }
-
   // side of arrangement vertex v against the line of piece e (oriented l -> r)
   int side(const Piece& e, i64 v) const {
     return (e.src >= 0 ? side_ev(e.src, v) : g_.side(e.line, av_[v])) * e.s;
   }
-  // Side of local vertex v (an input vertex, or an arrangement vertex once order() has
-  // run: input vertices keep their ids) against the line of input edge i: from the
+  // Side of local vertex v (an input vertex before order() has run, an arrangement
+  // vertex after) against the line of input edge i: from the
   // cached plain coordinates when both are plain (one orientation of doubles), else
   // Geo::side.
-  struct LLine {
-    FE ax, ay, bx, by;  // the line's two points (exact when e == 0)
-    bool plain;
-  };
-  struct LVert {
-    FE x, y;  // exact when plain (a point of two doubles)
-    bool plain;
-  };
   std::vector<LLine> ll_;
   std::vector<LVert> lv_;
   int side_ev(i64 i, i64 v) const {
@@ -616,7 +649,7 @@ class Overlay {
       return mk::orient(L.ax.v, L.ay.v, L.bx.v, L.by.v, V.x.v, V.y.v);
     int s = fe_sign(cross(L.bx - L.ax, L.by - L.ay, V.x - L.ax, V.y - L.ay));
     if (s != UNSURE) return s;
-    return g_.side(ed_[i].line, v < (i64)vg_.size() ? vg_[v] : av_[v]);
+    return g_.side(ed_[i].line, ordered_ ? av_[v] : vg_[v]);
   }
   LVert lvert(i64 gv) const {
     const Vert& V = g_.verts[gv];
@@ -666,15 +699,19 @@ class Overlay {
   };
   SweepStatus sw_st_;
 
-  // Sweeps the pieces ps (which do not cross); after inserting the pieces that start at
-  // a vertex calls at_vertex(new pieces bottom to top, predecessor of the lowest or -1).
-  // The status is sorted bottom to top: at vertex v the pieces below v are a prefix (v is
-  // strictly left of each, looking along it), then come the pieces that end at v (no
-  // piece passes through a vertex: the pieces are noded); those are replaced by the
-  // pieces that start at v, in slope order.
-  std::vector<i64> sw_by_rank_, sw_lo_l_, sw_lo_r_, sw_at_l_, sw_at_r_, sw_fill_, sw_fresh_;
+  // Sweeps the pieces ps (which do not cross), grouped by their left vertex: the pieces
+  // of vertex v are ps[start[v] .. start[v + 1]), in slope order (bottom to top). After
+  // inserting the pieces that start at a vertex calls at_vertex(first, end, predecessor
+  // of the first or -1). The status is sorted bottom to top: at vertex v the pieces below
+  // v are a prefix (v is strictly left of each, looking along it), then come the pieces
+  // that end at v (no piece passes through a vertex: the pieces are noded); those are
+  // replaced by the pieces that start at v.
+  std::vector<i64> sw_nend_;
   template <class F>
-  void sweep(const std::vector<Piece>& ps, F&& at_vertex);
+  void sweep(const std::vector<Piece>& ps, const std::vector<i64>& start, F&& at_vertex);
+  // ps (with a value per piece in `val`) grouped by left vertex and in slope order, as
+  // sweep() takes them; start as sweep() reads it
+  void group_pieces(std::vector<Piece>& ps, std::vector<i64>& val, std::vector<i64>& start);
 
   // step 5
   void windings();

@@ -13,34 +13,17 @@ namespace mk {
 namespace ov {
 
 template <class F>
-inline void Overlay::sweep(const std::vector<Piece>& ps, F&& at_vertex) {
-  const i64 nv = (i64)av_.size(), np = (i64)ps.size();
-  std::vector<i64>&by_rank = sw_by_rank_, &lo_l = sw_lo_l_, &lo_r = sw_lo_r_,
-  &at_l = sw_at_l_, &at_r = sw_at_r_, &fresh = sw_fresh_;
-  by_rank.resize(nv);
-  for (i64 v = 0; v < nv; ++v) by_rank[rank_[v]] = v;
-  lo_l.assign(nv + 1, 0);
-  lo_r.assign(nv + 1, 0);
-  for (const Piece& e : ps) {
-    ++lo_l[e.l + 1];
-    ++lo_r[e.r + 1];
-  }
-  for (i64 v = 0; v < nv; ++v) {
-    lo_l[v + 1] += lo_l[v];
-    lo_r[v + 1] += lo_r[v];
-  }
-  at_l.resize(np);
-  at_r.resize(np);
-  sw_fill_.assign(lo_l.begin(), lo_l.end() - 1);
-  for (i64 e = 0; e < np; ++e) at_l[sw_fill_[ps[e].l]++] = e;
-  sw_fill_.assign(lo_r.begin(), lo_r.end() - 1);
-  for (i64 e = 0; e < np; ++e) at_r[sw_fill_[ps[e].r]++] = e;
+inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>& start,
+                           F&& at_vertex) {
+  const i64 nv = (i64)av_.size();
+  std::vector<i64>& nend_at = sw_nend_;
+  nend_at.assign(nv, 0);
+  for (const Piece& e : ps) ++nend_at[e.r];
   SweepStatus& st = sw_st_;
   st.clear();
   auto& ch = st.ch;
-  for (i64 t = 0; t < nv; ++t) {
-    i64 v = by_rank[t];
-    const i64 nend = lo_r[v + 1] - lo_r[v], nstart = lo_l[v + 1] - lo_l[v];
+  for (i64 v = 0; v < nv; ++v) {  // ids are sweep ranks
+    const i64 nend = nend_at[v], nstart = start[v + 1] - start[v];
     if (nend == 0 && nstart == 0) continue;
     auto below = [&](i64 id) {
       const Piece& e = ps[id];
@@ -89,10 +72,6 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, F&& at_vertex) {
     i64 pred = -1;
     if (o > 0) pred = ch[c][o - 1];
     else if (c > 0) pred = ch[c - 1].back();
-    fresh.assign(at_l.begin() + lo_l[v], at_l.begin() + lo_l[v + 1]);
-    if (fresh.size() > 1)
-      std::sort(fresh.begin(), fresh.end(),
-                [&](i64 a, i64 b) { return slope_below(ps[a], ps[b]); });
     if (c == st.size()) {  // at the top: the last chunk's end, or a new chunk
       if (c > 0 && ch[c - 1].size() < 2 * SweepStatus::kChunk) {
         --c;
@@ -103,7 +82,8 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, F&& at_vertex) {
       }
     }
     std::vector<i64>& cur = ch[c];
-    cur.insert(cur.begin() + (std::ptrdiff_t)o, fresh.begin(), fresh.end());
+    cur.insert(cur.begin() + (std::ptrdiff_t)o, (std::size_t)nstart, 0);
+    for (i64 q = 0; q < nstart; ++q) cur[o + (std::size_t)q] = start[v] + q;
     if (cur.size() > 2 * SweepStatus::kChunk) {  // split in halves
       const std::size_t half = cur.size() / 2;
       st.open(c + 1);
@@ -111,15 +91,43 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, F&& at_vertex) {
       ch[c + 1].assign(a.begin() + (std::ptrdiff_t)half, a.end());
       a.resize(half);
     }
-    at_vertex(fresh, pred);
+    at_vertex(start[v], start[v + 1], pred);
   }
 }
 
+inline void Overlay::group_pieces(std::vector<Piece>& ps, std::vector<i64>& val,
+                                  std::vector<i64>& start) {
+  const i64 nv = (i64)av_.size(), np = (i64)ps.size();
+  start.assign(nv + 1, 0);
+  for (const Piece& e : ps) ++start[e.l + 1];
+  for (i64 v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<i64> fill(start.begin(), start.end() - 1), slot(np);
+  for (i64 e = 0; e < np; ++e) slot[fill[ps[e].l]++] = e;
+  std::vector<Piece> sp(np);
+  std::vector<i64> sv(np);
+  for (i64 k = 0; k < np; ++k) {
+    sp[k] = ps[slot[k]];
+    sv[k] = val[slot[k]];
+  }
+  for (i64 v = 0; v < nv; ++v) {
+    const i64 a = start[v], b = start[v + 1];
+    if (b - a < 2) continue;
+    // a few pieces per vertex: insertion by slope, the values alongside
+    for (i64 k = a + 1; k < b; ++k)
+      for (i64 q = k; q > a && slope_below(sp[q], sp[q - 1]); --q) {
+        std::swap(sp[q], sp[q - 1]);
+        std::swap(sv[q], sv[q - 1]);
+      }
+  }
+  ps.swap(sp);
+  val.swap(sv);
+}
+
 inline void Overlay::windings() {
-  sweep(pcs_, [&](const std::vector<i64>& fresh, i64 pred) {
+  sweep(pcs_, pstart_, [&](i64 first, i64 end, i64 pred) {
     int w0 = pred < 0 ? 0 : pcs_[pred].b0 + pcs_[pred].c0;
     int w1 = pred < 0 ? 0 : pcs_[pred].b1 + pcs_[pred].c1;
-    for (i64 e : fresh) {
+    for (i64 e = first; e < end; ++e) {
       pcs_[e].b0 = w0;
       pcs_[e].b1 = w1;
       w0 += pcs_[e].c0;
@@ -226,7 +234,7 @@ inline void Overlay::add_ring(const std::vector<i64>& rv, const std::vector<i64>
     // this one at a point of its edge): the vertex stays in both, so rounding cannot
     // move the edge off the touching vertex
     if (!junction_[rv[i]] && bturn(bnd_[re[(i + n - 1) % n]], bnd_[re[i]]) == 0) continue;
-    if (lowest < 0 || rank_[rv[i]] < rank_[lowest]) {
+    if (lowest < 0 || rv[i] < lowest) {  // ids are sweep ranks
       lowest = rv[i];
       lowest_i = i;
     }
@@ -255,10 +263,12 @@ inline void Overlay::holes() {
       ps.push_back(bnd_[b]);
       ring_of.push_back(k);
     }
+  std::vector<i64> start;
+  group_pieces(ps, ring_of, start);
   std::vector<char> done(nr, 0);
-  sweep(ps, [&](const std::vector<i64>& fresh, i64 pred) {
+  sweep(ps, start, [&](i64 first, i64 end, i64 pred) {
     i64 below = pred;
-    for (i64 e : fresh) {
+    for (i64 e = first; e < end; ++e) {
       i64 k = ring_of[e];
       if (!done[k]) {
         done[k] = 1;
