@@ -226,6 +226,50 @@ class Overlay {
     if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 1);
     return s;
   }
+  // Sorts a (each key(a[i]) a VKey) into the sweep order: by the approximations as plain
+  // doubles (compact keys), then every adjacent pair compared with vkcmp (exact where the
+  // approximations cannot tell): the few inversions of near-equal keys are repaired by
+  // insertion, and a sequence with many goes to a full sort by vkcmp.
+  struct AKey {
+    double x, y;
+    std::uint32_t i;
+  };
+  std::vector<AKey> ak_;
+  template <class T, class K>
+  void sort_sweep(std::vector<T>& a, std::vector<T>& tmp, K key) {
+    const std::size_t n = a.size();
+    if (n < 2) return;
+    auto exact_less = [&](const T& u, const T& v) { return vkcmp(key(u), key(v)) < 0; };
+    if (n > 0xffffffffu) {
+      std::sort(a.begin(), a.end(), exact_less);
+      return;
+    }
+    ak_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const VKey& k = key(a[i]);
+      ak_[i] = AKey{k.x, k.y, (std::uint32_t)i};
+    }
+    std::sort(ak_.begin(), ak_.end(), [](const AKey& u, const AKey& v) {
+      return u.x < v.x || (u.x == v.x && u.y < v.y);
+    });
+    tmp.resize(n);
+    for (std::size_t t = 0; t < n; ++t) tmp[t] = a[ak_[t].i];
+    a.swap(tmp);
+    std::size_t moves = 0;
+    for (std::size_t t = 1; t < n; ++t) {
+      if (!exact_less(a[t], a[t - 1])) continue;
+      T x = a[t];
+      std::size_t q = t;
+      for (; q > 0 && exact_less(x, a[q - 1]); --q) a[q] = a[q - 1];
+      a[q] = x;
+      moves += t - q;
+      if (moves > n) {  // far from sorted: sort it all exactly
+        std::sort(a.begin(), a.end(), exact_less);
+        return;
+      }
+    }
+  }
+
   // certainly the same point without arithmetic: the same id, or crossings of the same
   // two lines (false: not known)
   bool same_vertex(i64 a, i64 b) const {
@@ -287,8 +331,7 @@ class Overlay {
           g2l_[v].stamp = run_stamp_;
           vk2_.push_back(vkey(v));
         }
-    std::sort(vk2_.begin(), vk2_.end(),
-              [&](const VKey& a, const VKey& b) { return vkcmp(a, b) < 0; });
+    sort_sweep(vk2_, vk3_, [](const VKey& k) -> const VKey& { return k; });
     merge_keys(vk_, vk2_);
     vg_.clear();
     for (std::size_t t = 0; t < vk_.size(); ++t) {
@@ -504,7 +547,7 @@ class Overlay {
     VKey k;
     i64 node;
   };
-  std::vector<NKey> nk_;
+  std::vector<NKey> nk_, nk2_;
   std::vector<LVert> lv2_;
   bool ordered_ = false;  // order() has run: local vertex ids are arrangement ids
   void order() {
@@ -514,8 +557,7 @@ class Overlay {
     nk_.clear();
     for (i64 node = nv0; node < nn; ++node)
       if (find(node) == node) nk_.push_back(NKey{vkey(gid(node)), node});
-    std::sort(nk_.begin(), nk_.end(),
-              [&](const NKey& a, const NKey& b) { return vkcmp(a.k, b.k) < 0; });
+    sort_sweep(nk_, nk2_, [](const NKey& k) -> const VKey& { return k.k; });
     const i64 nnew = (i64)nk_.size(), m = nv0 + nnew;
     n_vertices = m;
     lid_.resize(nn);
@@ -733,18 +775,23 @@ class Overlay {
   }
 
   // ---- rings
-  std::vector<std::vector<i64>> rings_;       // arrangement vertices, inside on the left
-  std::vector<std::vector<i64>> ring_edges_;  // boundary pieces of each ring
-  std::vector<std::vector<i64>> ring_lines_;  // line of the edge leaving each kept vertex
+  // ring k: its kept arrangement vertices rv_[roff_[k] .. roff_[k + 1]) (inside on the
+  // left) with the line of the edge leaving each (rl_), its boundary pieces
+  // re_[reoff_[k] .. reoff_[k + 1]), its orientation
+  std::vector<i64> rv_, rl_, roff_, re_, reoff_;
   std::vector<char> ring_ccw_;
+  // scratch of trace() and assemble()
+  std::vector<i64> tr_lo_, tr_outs_, tr_pos_, tr_walk_v_, tr_walk_e_;
+  std::vector<char> tr_used_;
+  std::vector<double> tr_xy_;
   std::vector<char> junction_;  // arrangement vertex where several boundary rings meet
 
   void trace(Rings& out);
 
   // a simple loop: drop collinear vertices, record its orientation
-  void add_ring(const std::vector<i64>& rv, const std::vector<i64>& re);
+  void add_ring(const i64* rv, const i64* re, i64 n);
 
-  // each hole's exterior (index into rings_), -1 for exteriors
+  // each hole's exterior (a ring's index), -1 for exteriors
   std::vector<i64> owner_;
   void holes();
 

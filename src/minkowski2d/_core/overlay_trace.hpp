@@ -153,17 +153,22 @@ inline void Overlay::boundary() {
 
 inline void Overlay::trace(Rings& out) {
   out.clear();
-  rings_.clear();
-  ring_edges_.clear();
-  ring_lines_.clear();
+  rv_.clear();
+  rl_.clear();
+  re_.clear();
+  roff_.assign(1, 0);
+  reoff_.assign(1, 0);
   ring_ccw_.clear();
   const i64 nv = (i64)av_.size(), nb = (i64)bnd_.size();
-  std::vector<i64> lo(nv + 1, 0);
+  std::vector<i64>& lo = tr_lo_;
+  lo.assign(nv + 1, 0);
   for (const Piece& b : bnd_) ++lo[b.from + 1];
   for (i64 v = 0; v < nv; ++v) lo[v + 1] += lo[v];
-  std::vector<i64> outs(nb);
+  std::vector<i64>& outs = tr_outs_;
+  outs.resize(nb);
   {
-    std::vector<i64> f(lo.begin(), lo.end() - 1);
+    std::vector<i64>& f = tr_pos_;
+    f.assign(lo.begin(), lo.end() - 1);
     for (i64 b = 0; b < nb; ++b) outs[f[bnd_[b].from]++] = b;
   }
   for (i64 v = 0; v < nv; ++v) {
@@ -190,10 +195,12 @@ inline void Overlay::trace(Rings& out) {
     }
     return best >= 0 ? outs[best] : outs[k1 - 1];
   };
-  junction_.assign(nv, 0);
+  junction_.resize(nv);
   for (i64 v = 0; v < nv; ++v) junction_[v] = lo[v + 1] - lo[v] > 1;
-  std::vector<char> used(nb, 0);
-  std::vector<i64> walk_v, walk_e, pos(nv, -1);
+  std::vector<char>& used = tr_used_;
+  used.assign(nb, 0);
+  std::vector<i64>&walk_v = tr_walk_v_, &walk_e = tr_walk_e_, &pos = tr_pos_;
+  pos.assign(nv, -1);
   for (i64 b0 = 0; b0 < nb; ++b0) {
     if (used[b0]) continue;
     // one closed walk, split at repeated vertices into simple loops
@@ -204,13 +211,11 @@ inline void Overlay::trace(Rings& out) {
       used[b] = 1;
       i64 v = bnd_[b].from;
       if (pos[v] >= 0) {
-        i64 p0 = pos[v];
-        std::vector<i64> rv(walk_v.begin() + p0, walk_v.end());
-        std::vector<i64> re(walk_e.begin() + p0, walk_e.end());
+        const i64 p0 = pos[v], m = (i64)walk_v.size() - p0;
         for (i64 k = p0; k < (i64)walk_v.size(); ++k) pos[walk_v[k]] = -1;
+        add_ring(walk_v.data() + p0, walk_e.data() + p0, m);
         walk_v.resize(p0);
         walk_e.resize(p0);
-        add_ring(rv, re);
       }
       pos[v] = (i64)walk_v.size();
       walk_v.push_back(v);
@@ -218,15 +223,13 @@ inline void Overlay::trace(Rings& out) {
       b = next_of(b);
     }
     for (i64 v : walk_v) pos[v] = -1;
-    if (!walk_v.empty()) add_ring(walk_v, walk_e);
+    if (!walk_v.empty()) add_ring(walk_v.data(), walk_e.data(), (i64)walk_v.size());
   }
   assemble(out);
 }
 
-inline void Overlay::add_ring(const std::vector<i64>& rv, const std::vector<i64>& re) {
-  const i64 n = (i64)rv.size();
-  std::vector<i64> kv, kl;
-  kv.reserve(n);
+inline void Overlay::add_ring(const i64* rv, const i64* re, i64 n) {
+  const std::size_t k0 = rv_.size();
   i64 lowest = -1, lowest_i = 0;
   for (i64 i = 0; i < n; ++i) {
     // rv[i] sits between re[i - 1] (in) and re[i] (out)
@@ -238,29 +241,35 @@ inline void Overlay::add_ring(const std::vector<i64>& rv, const std::vector<i64>
       lowest = rv[i];
       lowest_i = i;
     }
-    kv.push_back(rv[i]);
-    kl.push_back(bnd_[re[i]].line);
+    rv_.push_back(rv[i]);
+    rl_.push_back(bnd_[re[i]].line);
   }
-  if (kv.size() < 3) return;  // cannot happen for a boundary with area
+  if (rv_.size() - k0 < 3) {  // cannot happen for a boundary with area
+    rv_.resize(k0);
+    rl_.resize(k0);
+    return;
+  }
   // the turn at the lowest vertex is strict and its sign is the orientation
   int t = bturn(bnd_[re[(lowest_i + n - 1) % n]], bnd_[re[lowest_i]]);
-  rings_.push_back(std::move(kv));
-  ring_lines_.push_back(std::move(kl));
-  ring_edges_.push_back(re);
+  roff_.push_back((i64)rv_.size());
+  re_.insert(re_.end(), re, re + n);
+  reoff_.push_back((i64)re_.size());
   ring_ccw_.push_back(t > 0);
 }
 
 inline void Overlay::holes() {
-  const i64 nr = (i64)rings_.size();
+  const i64 nr = (i64)ring_ccw_.size();
   owner_.assign(nr, -1);
   bool any = false;
   for (i64 k = 0; k < nr; ++k) any |= !ring_ccw_[k];
   if (!any) return;
   std::vector<Piece> ps;
   std::vector<i64> ring_of;
+  ps.reserve(re_.size());
+  ring_of.reserve(re_.size());
   for (i64 k = 0; k < nr; ++k)
-    for (i64 b : ring_edges_[k]) {
-      ps.push_back(bnd_[b]);
+    for (i64 q = reoff_[k]; q < reoff_[k + 1]; ++q) {
+      ps.push_back(bnd_[re_[q]]);
       ring_of.push_back(k);
     }
   std::vector<i64> start;
@@ -284,63 +293,79 @@ inline void Overlay::holes() {
 
 inline void Overlay::assemble(Rings& out) {
   holes();
-  const i64 nr = (i64)rings_.size(), nv = (i64)av_.size();
-  std::vector<double> vx(nv), vy(nv);
-  std::vector<char> have(nv, 0);
+  const i64 nr = (i64)ring_ccw_.size(), nv = (i64)av_.size();
+  // each vertex rounded once: at its first use in ring order
+  std::vector<double>& vxy = tr_xy_;
+  vxy.resize(2 * nv);
+  std::vector<char>& have = tr_used_;
+  have.assign(nv, 0);
   out.exact_vertices = true;
-  auto xy = [&](i64 v, double& x, double& y) {
-    if (!have[v]) {
-      g_.rounded(av_[v], vx[v], vy[v]);
-      if (!(vx[v] - vx[v] == 0 && vy[v] - vy[v] == 0)) out.status = OVERFLOW;
-      if (out.exact_vertices && !g_.rounds_exactly(av_[v], vx[v], vy[v]))
-        out.exact_vertices = false;
-      have[v] = 1;
-    }
-    x = vx[v];
-    y = vy[v];
-  };
+  for (i64 v : rv_) {
+    if (have[v]) continue;
+    have[v] = 1;
+    double& x = vxy[2 * v];
+    double& y = vxy[2 * v + 1];
+    g_.rounded(av_[v], x, y);
+    if (!(x - x == 0 && y - y == 0)) out.status = OVERFLOW;
+    if (out.exact_vertices && !g_.rounds_exactly(av_[v], x, y)) out.exact_vertices = false;
+  }
   // a ring's smallest rounded vertex (x, then y): where it starts, and the sort key
-  std::vector<std::pair<std::pair<double, double>, i64>> key(nr);
+  struct RKey {
+    double x, y;
+    i64 k;
+    bool operator<(const RKey& o) const {
+      return x < o.x || (x == o.x && (y < o.y || (y == o.y && k < o.k)));
+    }
+  };
+  std::vector<RKey> key(nr);
   std::vector<i64> start(nr);
   for (i64 k = 0; k < nr; ++k) {
-    std::pair<double, double> best{INFINITY, INFINITY};
-    for (std::size_t i = 0; i < rings_[k].size(); ++i) {
-      double x, y;
-      xy(rings_[k][i], x, y);
-      if (std::make_pair(x, y) < best) {
-        best = {x, y};
-        start[k] = (i64)i;
+    double bx = INFINITY, by = INFINITY;
+    for (i64 i = roff_[k]; i < roff_[k + 1]; ++i) {
+      const double x = vxy[2 * rv_[i]], y = vxy[2 * rv_[i] + 1];
+      if (x < bx || (x == bx && y < by)) {
+        bx = x;
+        by = y;
+        start[k] = i - roff_[k];
       }
     }
-    key[k] = {best, k};
+    key[k] = RKey{bx, by, k};
   }
   std::sort(key.begin(), key.end());
-  std::vector<std::vector<i64>> kids(nr);
-  for (auto& kk : key) {
-    i64 k = kk.second;
+  // each exterior's holes, in key order (CSR)
+  std::vector<i64> kid_off(nr + 1, 0), kids;
+  for (const RKey& kk : key) {
+    const i64 k = kk.k;
     if (ring_ccw_[k]) continue;
     if (owner_[k] >= 0)
-      kids[owner_[k]].push_back(k);
+      ++kid_off[owner_[k] + 1];
     else
       out.status = INTERNAL;  // a hole without an exterior: never expected
   }
+  for (i64 k = 0; k < nr; ++k) kid_off[k + 1] += kid_off[k];
+  kids.resize(kid_off[nr]);
+  {
+    std::vector<i64> f(kid_off.begin(), kid_off.end() - 1);
+    for (const RKey& kk : key)
+      if (!ring_ccw_[kk.k] && owner_[kk.k] >= 0) kids[f[owner_[kk.k]]++] = kk.k;
+  }
+  out.xy.reserve(2 * rv_.size());
+  if (out.want_lines) out.line.reserve(rv_.size());
   auto emit = [&](i64 k) {
-    const std::vector<i64>& r = rings_[k];
-    const std::size_t m = r.size();
-    for (std::size_t i = 0; i < m; ++i) {
-      double x, y;
-      xy(r[(start[k] + i) % m], x, y);
-      out.xy.push_back(x);
-      out.xy.push_back(y);
-      if (out.want_lines) out.line.push_back(ring_lines_[k][(start[k] + i) % m]);
+    const i64 r0 = roff_[k], m = roff_[k + 1] - r0;
+    for (i64 i = 0; i < m; ++i) {
+      i64 q = r0 + (start[k] + i) % m;
+      out.xy.push_back(vxy[2 * rv_[q]]);
+      out.xy.push_back(vxy[2 * rv_[q] + 1]);
+      if (out.want_lines) out.line.push_back(rl_[q]);
     }
     out.ring_off.push_back((i64)out.xy.size() / 2);
   };
-  for (auto& kk : key) {
-    i64 k = kk.second;
+  for (const RKey& kk : key) {
+    const i64 k = kk.k;
     if (!ring_ccw_[k]) continue;
     emit(k);
-    for (i64 h : kids[k]) emit(h);
+    for (i64 q = kid_off[k]; q < kid_off[k + 1]; ++q) emit(kids[q]);
     out.poly_off.push_back((i64)out.ring_off.size() - 1);
   }
 }
