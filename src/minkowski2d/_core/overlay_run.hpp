@@ -36,7 +36,7 @@ class Overlay {
   void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out) {
     arrange(in, rule);
     out.clear();
-    for (const Piece& b : bnd_) out.push_back(BEdge{b.line, vg_[b.from], vg_[b.to]});
+    for (const BPiece& b : bnd_) out.push_back(BEdge{b.line, vg_[b.from], vg_[b.to]});
   }
   // The same, with some vertices already in sweep order: each list in `sorted` holds
   // global vertex ids in the order of boundary_vertices() (one id per point, no id in
@@ -60,7 +60,7 @@ class Overlay {
     if (bnd_.empty()) return;
     const i64 nv = (i64)av_.size();
     std::vector<char> used(nv, 0);
-    for (const Piece& b : bnd_) used[b.from] = used[b.to] = 1;
+    for (const BPiece& b : bnd_) used[b.from] = used[b.to] = 1;
     for (i64 v = 0; v < nv; ++v)  // ids are sweep ranks
       if (used[v]) out.push_back(av_[v]);
   }
@@ -125,22 +125,33 @@ class Overlay {
     i64 edge, node;  // node: local vertex id, or nv0 + new crossing
   };
   std::vector<Split> splits_;
-  std::vector<i64> newv_;  // new crossing -> global vertex id
+  std::vector<i64> newv_;  // new crossing -> global vertex id (made after intersect())
+  std::vector<std::pair<i64, i64>> cross_;  // new crossing -> its two lines
   std::vector<i64> uf_;
+  // Vertex and edge ids of a run fit 32 bits (arrange() stops with RESOURCE beyond):
+  // the pieces are the run's largest arrays.
+  using i32 = std::int32_t;
   struct Piece {
-    i64 l, r;       // local vertices, rank l < rank r (boundary: from, to)
+    i32 l, r;    // arrangement vertices, l < r (sweep ranks)
+    i32 src;     // the input edge it comes from (its line's cached points: ll_)
+    i32 c0, c1;  // change of w0, w1 crossing upwards
+    i32 b0, b1;  // winding numbers below
+    i32 n0;      // layer-0 weight of the edges with their inside below (for
+                 // degenerate(): the rings covering the piece's own points)
+    i32 nl;      // layer-2 (line) edges along it: a piece of a clipped polyline
+    std::int8_t s;   // +1 when the line runs from l's side to r's side
+    std::int8_t ld;  // +1: the first such line edge runs l -> r, -1: r -> l
     i64 line;
-    int s;          // +1 when the line runs from l's side to r's side
-    int c0, c1;     // change of w0, w1 crossing upwards
-    int b0, b1;     // winding numbers below
-    i64 from, to;   // boundary direction (local ids)
-    int n0;         // layer-0 weight of the edges with their inside below (for
-                    // degenerate(): the rings covering the piece's own points)
-    i64 src = -1;   // the input edge it comes from (its line's cached points: ll_)
-    int nl = 0;     // layer-2 (line) edges along it: a piece of a clipped polyline
-    int ld = 0;     // +1: the first such line edge runs l -> r, -1: r -> l
   };
-  std::vector<Piece> pcs_, bnd_;
+  std::vector<Piece> pcs_;
+  // a boundary piece: from -> to with the inside on the left; d = +1 when its line runs
+  // from -> to
+  struct BPiece {
+    i64 line;
+    i32 from, to, src;
+    std::int8_t d;
+  };
+  std::vector<BPiece> bnd_;
   int rule_ = UNION;
   bool over_ = false;
   bool keep_zero_ = false;
@@ -171,6 +182,15 @@ class Overlay {
     ordered_ = false;
     local_vertices(in);
     intersect();
+    // vertex and edge ids of 32 bits (the pieces' fields)
+    const i64 i32max = INT32_MAX;
+    if ((i64)vg_.size() + (i64)cross_.size() >= i32max || (i64)ed_.size() >= i32max) over_ = true;
+    if (!over_) {  // the crossings as vertices, in one growth of the geometry
+      g_.verts.reserve(g_.verts.size() + cross_.size());
+      newv_.resize(cross_.size());
+      for (std::size_t k = 0; k < cross_.size(); ++k)
+        newv_[k] = g_.vert_cross(cross_[k].first, cross_[k].second);
+    }
     if (over_) {
       splits_.clear();
       newv_.clear();
@@ -191,8 +211,8 @@ class Overlay {
     bool plain;
   };
   struct LVert {
-    FE x, y;  // exact when plain (a point of two doubles)
-    bool plain;
+    FE x, y;  // exact when both bounds are 0: then plain doubles
+    bool plain() const { return x.e == 0 && y.e == 0; }
   };
 
   // step 1: input vertices sorted and merged; edges in local ids
@@ -292,11 +312,12 @@ class Overlay {
   std::uint32_t run_stamp_ = 0;
 
   std::vector<VKey> vk2_, vk3_;
-  // merges the sorted sequence b into a (sorted): the result in a
-  void merge_keys(std::vector<VKey>& a, const std::vector<VKey>& b) {
+  // merges the sorted sequence b into a (sorted): the result in a (b's buffer may be
+  // taken)
+  void merge_keys(std::vector<VKey>& a, std::vector<VKey>& b) {
     if (b.empty()) return;
     if (a.empty()) {
-      a = b;
+      a.swap(b);
       return;
     }
     vk3_.resize(a.size() + b.size());
@@ -370,6 +391,7 @@ class Overlay {
     const i64 n = (i64)ed_.size();
     splits_.clear();
     newv_.clear();
+    cross_.clear();
     bx0_.resize(n);
     bx1_.resize(n);
     by0_.resize(n);
@@ -471,8 +493,8 @@ class Overlay {
       over_ = true;
       return;
     }
-    i64 node = (i64)vg_.size() + (i64)newv_.size();
-    newv_.push_back(g_.vert_cross(s.line, t.line));
+    i64 node = (i64)vg_.size() + (i64)cross_.size();
+    cross_.emplace_back(s.line, t.line);
     splits_.push_back(Split{i, node});
     splits_.push_back(Split{j, node});
   }
@@ -593,9 +615,9 @@ class Overlay {
   // pieces joining the same two vertices merged (weights added). pstart_[v] is the
   // first piece of vertex v.
   struct RawP {
-    i64 r, src;
-    int s, c;  // the line's direction (l -> r: +1), the signed weight crossing upwards
-    bool fwd;  // the edge runs l -> r
+    i32 r, src;
+    std::int8_t s;  // the line's direction (l -> r: +1)
+    bool fwd;       // the edge runs l -> r
   };
   std::vector<RawP> raw_;
   std::vector<i64> pstart_, pfill_;
@@ -628,7 +650,7 @@ class Overlay {
     pfill_.assign(pstart_.begin(), pstart_.end() - 1);
     for (i64 i = 0; i < ne; ++i)
       edge_pieces(i, [&](i64 l, i64 r, int s, bool fwd) {
-        raw_[pfill_[l]++] = RawP{r, i, s, fwd ? ed_[i].w : -ed_[i].w, fwd};
+        raw_[pfill_[l]++] = RawP{(i32)r, (i32)i, (std::int8_t)s, fwd};
       });
     // each group: sorted by r (then by input edge, as placed), equal ones merged, then
     // in slope order
@@ -643,20 +665,22 @@ class Overlay {
         });
       for (i64 q = a; q < b;) {
         Piece pc;
-        pc.l = v;
+        pc.l = (i32)v;
         pc.r = raw_[q].r;
         pc.src = raw_[q].src;
         pc.line = ed_[pc.src].line;
         pc.s = raw_[q].s;
-        pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.ld = pc.b0 = pc.b1 = 0;
+        pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.b0 = pc.b1 = 0;
+        pc.ld = 0;
         i64 q1 = q;
         for (; q1 < b && raw_[q1].r == pc.r; ++q1) {
           const RawP& x = raw_[q1];
-          const int layer = ed_[x.src].layer;
-          if (layer == 0) pc.c0 += x.c;
-          if (layer == 1) pc.c1 += x.c;
-          if (layer == 0 && x.c < 0) pc.n0 -= x.c;
-          if (layer == 2) {
+          const EdgeIn& e = ed_[x.src];
+          const int c = x.fwd ? e.w : -e.w;  // the weight crossing upwards
+          if (e.layer == 0) pc.c0 += c;
+          if (e.layer == 1) pc.c1 += c;
+          if (e.layer == 0 && c < 0) pc.n0 -= c;
+          if (e.layer == 2) {
             if (!pc.nl) pc.ld = x.fwd ? 1 : -1;  // the first line edge's direction
             ++pc.nl;
           }
@@ -687,7 +711,7 @@ class Overlay {
   int side_ev(i64 i, i64 v) const {
     const LLine& L = ll_[i];
     const LVert& V = lv_[v];
-    if (L.plain && V.plain)
+    if (L.plain && V.plain())
       return mk::orient(L.ax.v, L.ay.v, L.bx.v, L.by.v, V.x.v, V.y.v);
     int s = fe_sign(cross(L.bx - L.ax, L.by - L.ay, V.x - L.ax, V.y - L.ay));
     if (s != UNSURE) return s;
@@ -695,7 +719,7 @@ class Overlay {
   }
   LVert lvert(i64 gv) const {
     const Vert& V = g_.verts[gv];
-    return LVert{V.x, V.y, V.p >= 0 && V.x.e == 0 && V.y.e == 0};
+    return LVert{V.x, V.y};
   }
   // pieces from one vertex: e1 below e2 when the turn from e1 to e2 is left
   bool slope_below(const Piece& e1, const Piece& e2) const {
@@ -762,12 +786,8 @@ class Overlay {
   void boundary();
 
   // direction of boundary piece b (from -> to) as points of its line
-  void bdir(const Piece& b, const P*& p, const P*& q) const {
-    // the line runs l -> r when s > 0; from -> to is l -> r when from == l
-    int s = b.from == b.l ? b.s : -b.s;
-    g_.dir(b.line, s, p, q);
-  }
-  int bturn(const Piece& a, const Piece& b) const {
+  void bdir(const BPiece& b, const P*& p, const P*& q) const { g_.dir(b.line, b.d, p, q); }
+  int bturn(const BPiece& a, const BPiece& b) const {
     const P *p1, *q1, *p2, *q2;
     bdir(a, p1, q1);
     bdir(b, p2, q2);

@@ -12,6 +12,46 @@
 namespace mk {
 namespace ov {
 
+// The first index of [0, n) where p is false, p being true on a prefix (n when true
+// everywhere), searched by galloping from the guess g: O(log d) tests for an answer d
+// places away.
+template <class Pred>
+inline std::size_t first_false(std::size_t n, std::size_t g, Pred&& p) {
+  if (n == 0) return 0;
+  if (g >= n) g = n - 1;
+  std::size_t lo = 0, hi = n;  // the answer is in [lo, hi]; p(hi) is false unless hi == n
+  if (p(g)) {
+    lo = g + 1;
+    for (std::size_t step = 1; lo < n; step *= 2) {
+      const std::size_t t = lo + step - 1;
+      if (t >= n) break;
+      if (!p(t)) {
+        hi = t;
+        break;
+      }
+      lo = t + 1;
+    }
+  } else {
+    hi = g;
+    for (std::size_t step = 1; hi > 0; step *= 2) {
+      const std::size_t t = hi >= step ? hi - step : 0;
+      if (p(t)) {
+        lo = t + 1;
+        break;
+      }
+      hi = t;
+    }
+  }
+  while (lo < hi) {
+    const std::size_t mid = lo + (hi - lo) / 2;
+    if (p(mid))
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
 template <class F>
 inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>& start,
                            F&& at_vertex) {
@@ -22,6 +62,7 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>&
   SweepStatus& st = sw_st_;
   st.clear();
   auto& ch = st.ch;
+  std::size_t fc = 0, fo = 0;  // the finger: chunk and place of the last change
   for (i64 v = 0; v < nv; ++v) {  // ids are sweep ranks
     const i64 nend = nend_at[v], nstart = start[v + 1] - start[v];
     if (nend == 0 && nstart == 0) continue;
@@ -29,27 +70,14 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>&
       const Piece& e = ps[id];
       return e.r != v && side(e, v) > 0;  // v is on the pieces that end at v
     };
-    // the first piece not below v: its chunk c, then its place o in it
+    // the first piece not below v: its chunk c, then its place o in it, each searched
+    // from the place of the last vertex (consecutive vertices are often close)
     const std::size_t nc = st.size();
-    std::size_t c = 0, o = 0;
-    {
-      std::size_t lo = 0, hi = nc;
-      while (lo < hi) {
-        std::size_t mid = (lo + hi) / 2;
-        if (below(ch[mid].back())) lo = mid + 1;
-        else hi = mid;
-      }
-      c = lo;
-      if (c < nc) {
-        std::size_t a = 0, b = ch[c].size();
-        while (a < b) {
-          std::size_t mid = (a + b) / 2;
-          if (below(ch[c][mid])) a = mid + 1;
-          else b = mid;
-        }
-        o = a;
-      }
-    }
+    std::size_t c = first_false(nc, fc, [&](std::size_t k) { return below(ch[k].back()); });
+    std::size_t o = 0;
+    if (c < nc)
+      o = first_false(ch[c].size(), c == fc ? fo : 0,
+                      [&](std::size_t k) { return below(ch[c][k]); });
     // the nend pieces from there end at v: removed (they may span chunks)
     for (i64 k = nend; k > 0;) {
 #ifdef MK_OVERLAY_CHECK
@@ -67,6 +95,8 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>&
         o = 0;
       }
     }
+    fc = c;
+    fo = o;
     if (nstart == 0) continue;
     // the predecessor of the place, then the fresh pieces inserted there
     i64 pred = -1;
@@ -84,6 +114,8 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>&
     std::vector<i64>& cur = ch[c];
     cur.insert(cur.begin() + (std::ptrdiff_t)o, (std::size_t)nstart, 0);
     for (i64 q = 0; q < nstart; ++q) cur[o + (std::size_t)q] = start[v] + q;
+    fc = c;
+    fo = o + (std::size_t)nstart;
     if (cur.size() > 2 * SweepStatus::kChunk) {  // split in halves
       const std::size_t half = cur.size() / 2;
       st.open(c + 1);
@@ -138,14 +170,14 @@ inline void Overlay::windings() {
 
 inline void Overlay::boundary() {
   bnd_.clear();
+  bnd_.reserve(pcs_.size());  // the pages it does not fill are never touched
   for (const Piece& e : pcs_) {
     bool ib = rule_inside(rule_, e.b0, e.b1);
     bool ia = rule_inside(rule_, e.b0 + e.c0, e.b1 + e.c1);
     if (ib == ia) continue;
-    Piece b = e;
-    b.from = ia ? e.l : e.r;
-    b.to = ia ? e.r : e.l;
-    bnd_.push_back(b);
+    // inside above (ia): from l to r; the line runs l -> r when s > 0
+    bnd_.push_back(BPiece{e.line, ia ? e.l : e.r, ia ? e.r : e.l, e.src,
+                          (std::int8_t)(ia ? e.s : -e.s)});
   }
   // boundary pieces reference arrangement vertices: map to global ids for run(out)
   vg_.assign(av_.begin(), av_.end());
@@ -162,7 +194,7 @@ inline void Overlay::trace(Rings& out) {
   const i64 nv = (i64)av_.size(), nb = (i64)bnd_.size();
   std::vector<i64>& lo = tr_lo_;
   lo.assign(nv + 1, 0);
-  for (const Piece& b : bnd_) ++lo[b.from + 1];
+  for (const BPiece& b : bnd_) ++lo[b.from + 1];
   for (i64 v = 0; v < nv; ++v) lo[v + 1] += lo[v];
   std::vector<i64>& outs = tr_outs_;
   outs.resize(nb);
@@ -269,7 +301,15 @@ inline void Overlay::holes() {
   ring_of.reserve(re_.size());
   for (i64 k = 0; k < nr; ++k)
     for (i64 q = reoff_[k]; q < reoff_[k + 1]; ++q) {
-      ps.push_back(bnd_[re_[q]]);
+      const BPiece& b = bnd_[re_[q]];
+      Piece pc{};
+      const bool fwd = b.from < b.to;
+      pc.l = fwd ? b.from : b.to;
+      pc.r = fwd ? b.to : b.from;
+      pc.src = b.src;
+      pc.s = fwd ? b.d : (std::int8_t)-b.d;
+      pc.line = b.line;
+      ps.push_back(pc);
       ring_of.push_back(k);
     }
   std::vector<i64> start;
