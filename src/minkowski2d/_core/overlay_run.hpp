@@ -186,7 +186,9 @@ class Overlay {
     const i64 i32max = INT32_MAX;
     if ((i64)vg_.size() + (i64)cross_.size() >= i32max || (i64)ed_.size() >= i32max) over_ = true;
     if (!over_) {  // the crossings as vertices, in one growth of the geometry
-      g_.verts.reserve(g_.verts.size() + cross_.size());
+      const std::size_t need = g_.verts.size() + cross_.size();  // growing geometrically:
+      if (need > g_.verts.capacity())  // a workspace's geometry grows over many runs
+        g_.verts.reserve(std::max(need, 2 * g_.verts.capacity()));
       newv_.resize(cross_.size());
       for (std::size_t k = 0; k < cross_.size(); ++k)
         newv_[k] = g_.vert_cross(cross_[k].first, cross_[k].second);
