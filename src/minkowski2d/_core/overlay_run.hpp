@@ -528,11 +528,11 @@ class Overlay {
     for (const Split& sp : splits_) sk_[sfill_[sp.edge]++].node = sp.node;
     edir_.resize(ne);
     for (i64 i = 0; i < ne; ++i) {
+      const EdgeIn& e = ed_[i];
+      // the edge's direction against its line (+1: v0 -> v1 runs along it; pieces())
+      edir_[i] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
       const i64 a = sstart_[i], b = sstart_[i + 1];
       if (a == b) continue;
-      const EdgeIn& e = ed_[i];
-      // the edge's direction against its line (+1: v0 -> v1 runs along it)
-      edir_[i] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
       // the position along the edge: its line's axis coordinate (as along() compares),
       // times the sign that makes it grow from v0 to v1; certified apart -> no exact test
       const P &p = g_.pts[g_.lines[e.line].a], &q = g_.pts[g_.lines[e.line].b];
@@ -628,7 +628,7 @@ class Overlay {
   void edge_pieces(i64 i, F&& f) const {
     const EdgeIn& e = ed_[i];
     // the line's own direction against the edge's
-    const int es = g_.along(e.line, vg_[e.v1], vg_[e.v0]);
+    const int es = edir_[i];
     i64 prev = lid_[e.v0];
     auto emit = [&](i64 nxt) {
       if (nxt == prev) return;
