@@ -348,6 +348,7 @@ class Overlay {
       }
     // the others, sorted
     vk2_.clear();
+    vk2_.reserve(2 * in.size());
     for (const EdgeIn& e : in)
       for (i64 v : {e.v0, e.v1})
         if (g2l_[v].stamp != run_stamp_) {
@@ -362,6 +363,7 @@ class Overlay {
       g2l_[vk_[t].g].local = (i64)vg_.size() - 1;
     }
     ed_.clear();
+    ed_.reserve(in.size());
     ngroups_ = 0;
     for (const EdgeIn& e : in) {
       i64 a = g2l_[e.v0].local, b = g2l_[e.v1].local;
