@@ -345,9 +345,9 @@ inline void Overlay::assemble(Rings& out) {
     have[v] = 1;
     double& x = vxy[2 * v];
     double& y = vxy[2 * v + 1];
-    g_.rounded(av_[v], x, y);
+    // (whether it is v itself is asked only while every vertex so far was)
+    if (!g_.round_vertex(av_[v], x, y, out.exact_vertices)) out.exact_vertices = false;
     if (!(x - x == 0 && y - y == 0)) out.status = OVERFLOW;
-    if (out.exact_vertices && !g_.rounds_exactly(av_[v], x, y)) out.exact_vertices = false;
   }
   // a ring's smallest rounded vertex (x, then y): where it starts, and the sort key
   struct RKey {
