@@ -69,6 +69,12 @@ class Overlay {
     run_raw(in, rule, out);
     if (out.status == OK) finish_rounded(out);
   }
+  // After a run with boundary edges out: the same region as rings (as run with rings out
+  // would have given)
+  void rings(Rings& out) {
+    trace(out);
+    if (out.status == OK) finish_rounded(out);
+  }
   // as run, without the check after rounding (the check's own re-run uses it)
   void run_raw(const std::vector<EdgeIn>& in, int rule, Rings& out) {
     arrange(in, rule);

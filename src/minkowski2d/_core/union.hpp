@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <memory>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -218,6 +219,13 @@ class ConvexUnion {
   // with dU, more by a cascade first
   template <class Out>
   bool absorb(Out& out) {
+    if constexpr (std::is_same_v<Out, Rings>) {
+      if (pending_.empty() && !ubnd_.empty()) {
+        // nothing new since the last round: the rings of its run, which gave dU
+        o_.rings(out);
+        return true;
+      }
+    }
     std::vector<EdgeIn> in;
     bool ok;
     if ((i64)pending_.size() <= leaf) {
