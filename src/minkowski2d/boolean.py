@@ -468,8 +468,9 @@ def clip_lines(
     shapely LineString or MultiLineString
         The parts kept (a point set: where lines run over each other, that stretch comes
         out once), each following the direction of the input line, joined where two
-        meet; an empty LineString when nothing is kept. Points where a line only touches
-        the region are not parts. Crossing vertices are the correctly rounded exact ones.
+        meet, in lexicographic order of their vertices; an empty LineString when nothing
+        is kept. Points where a line only touches the region are not parts. Crossing
+        vertices are the correctly rounded exact ones.
 
     Examples
     --------
