@@ -156,6 +156,7 @@ class Test:
     sizes: list[int]
     make: Callable[[int], Case]
     count: Callable[[int], int]  # the suite's "count" column
+    edges: Callable[[int], int]  # input edges at size n (without building the case)
 
 
 def _case(subj: np.ndarray, clip: np.ndarray, area: float | None) -> Case:
@@ -174,6 +175,7 @@ TESTS = [
             400 * (n * n + (n - 1) ** 2) - 200 * (n - 1) ** 2,
         ),
         lambda n: n * n + (n - 1) ** 2,
+        lambda n: 4 * (n * n + (n - 1) ** 2),
     ),
     Test(
         "not overlap",
@@ -186,6 +188,7 @@ TESTS = [
             100 * (n * n + (n - 1) ** 2),
         ),
         lambda n: n * n + (n - 1) ** 2,
+        lambda n: 4 * (n * n + (n - 1) ** 2),
     ),
     Test(
         "lines net",
@@ -194,6 +197,7 @@ TESTS = [
         [8, 32, 128, 512],
         lambda n: _case(lines_x(20, n), lines_y(20, n), 100 * n * n - 50 * n),
         lambda n: 2 * n,
+        lambda n: 8 * n,
     ),
     Test(
         "spiral",
@@ -202,6 +206,7 @@ TESTS = [
         [256, 4096, 65536, 262144],
         lambda n: Case([spiral(n)], [], None, 4 * n),
         lambda n: n,
+        lambda n: 4 * n,
     ),
     Test(
         "windows",
@@ -210,6 +215,7 @@ TESTS = [
         [8, 32, 128, 362],
         lambda n: _case(*windows(n), 300 * n * n),
         lambda n: 2 * n * n,
+        lambda n: 8 * n * n,
     ),
     Test(
         "nested squares",
@@ -218,6 +224,7 @@ TESTS = [
         [64, 1024, 16384, 65536],
         lambda n: _case(*concentric(4, n), 128 * n * n),
         lambda n: 2 * n,
+        lambda n: 16 * n,
     ),
 ]
 
@@ -367,7 +374,8 @@ def main(argv: list[str] | None = None) -> int:
         test = TESTS[t]
         slow: set[str] = set()
         last: dict[str, tuple[int, float]] = {}
-        for n in args.sizes or test.sizes:
+        sizes = args.sizes or test.sizes
+        for k, n in enumerate(sizes):
             if "ours" in slow:  # past the budget: the test stops here, every peer with it
                 break
             case = test.make(n)
@@ -382,12 +390,11 @@ def main(argv: list[str] | None = None) -> int:
                     continue
                 times[name], results[name] = timed(run[name], reps)
                 # stop a peer past the budget, or whose growth from its last size predicts
-                # more than three budgets at the next (GEOS's windows grow quadratically)
-                # (the next size is taken to grow the edges as this one did: 8x or 16x)
+                # more than three budgets at the next size (GEOS's windows grow
+                # quadratically; without a measured growth, quadratic is assumed)
                 prev = last.get(name)
-                grow, step = 2.0, 8.0
-                if prev:
-                    step = max(2.0, case.edges / prev[0])
+                grow = 2.0
+                step = test.edges(sizes[k + 1]) / case.edges if k + 1 < len(sizes) else 1.0
                 if prev and prev[1] > 0.05 and times[name] > 0:
                     ratio = math.log(times[name] / prev[1]) / math.log(case.edges / prev[0])
                     grow = max(1.0, ratio)

@@ -232,6 +232,10 @@ def test_clip_lines_partition_the_lines(p, pts):
     assert shapely.covers(g.buffer(1e-7), inside) or inside.is_empty
     assert not shapely.intersection(outside, g.buffer(-1e-7)).length > 1e-9
     assert inside.length == pytest.approx(_length_inside(line, g), rel=1e-9, abs=1e-9)
+    # the parts in lexicographic order of their vertices (whatever the internal numbering)
+    for parts in (inside, outside):
+        seq = [np.asarray(q.coords).ravel().tolist() for q in shapely.get_parts(parts)]
+        assert seq == sorted(seq)
 
 
 def test_clip_lines_along_the_boundary_and_containers():

@@ -180,3 +180,32 @@ def test_overflowing_crossing_is_reported():
     assert status in (0, _ext.OVERFLOW)
     if status == 0:
         assert np.isfinite(xy).all()
+
+
+def _pencil(k, cx, cy, r, seed):
+    """k thin triangles through a common centre (cx, cy) with float vertices: their
+    crossings cluster within a few ulps of it, where the approximations cannot order the
+    vertices and the exact comparisons repair the sweep order."""
+    rng = np.random.default_rng(seed)
+    rings = []
+    for a in rng.uniform(0, np.pi, k):
+        dx, dy = r * np.cos(a), r * np.sin(a)
+        ex, ey = -dy * 1e-9, dx * 1e-9  # a sliver: its two long edges pass by the centre
+        tip = (cx - dx, cy - dy)
+        rings.append([tip, (cx + dx + ex, cy + dy + ey), (cx + dx - ex, cy + dy - ey)])
+    return rings
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_crossings_within_ulps_of_each_other_equal_the_oracle(seed):
+    check(_pencil(7, 1 / 3, 1 / 7, 2.0, seed))
+
+
+def test_a_net_of_strips_equals_the_oracle():
+    # many vertices on each vertical line, visited bottom to top by the sweep: its search
+    # starts from the last vertex's place (gallops), then jumps back down at the next line
+    n = 5
+    vert = [[(3 * i, 0), (3 * i + 1, 0), (3 * i + 1, 3 * n), (3 * i, 3 * n)] for i in range(n)]
+    horz = [[(-1, 3 * j), (3 * n, 3 * j), (3 * n, 3 * j + 2), (-1, 3 * j + 2)] for j in range(n)]
+    for rule in RULES:
+        check(vert + horz, None, [0] * n + [1] * n, rule)

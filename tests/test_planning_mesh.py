@@ -395,6 +395,30 @@ def same_as_visibility(mesh, vis, pairs):
         assert all(mesh._core.segment_free(*a, *b) for a, b in zip(got.points, got.points[1:]))
 
 
+def check_landmark_tables(pl, vis):
+    """Every finite table entry is the visibility graph's length between the landmark and
+    the search vertex; +inf only where no path joins them (or the vertex is the far end
+    of a stub, inside a third obstacle). Vertices off a grid map's grid are skipped."""
+    at, xy, d = pl._core.landmarks()
+    if len(at) == 0:  # no free space with area: no tables
+        assert d.size == 0 and len(pl.navmesh.cells) == 0
+        return
+    assert d.shape == (len(xy), len(at))
+    for k, a in enumerate(at.tolist()):
+        L = tuple(xy[a].tolist())
+        assert d[a, k] == 0
+        for v in range(len(xy)):
+            P = tuple(xy[v].tolist())
+            try:
+                want = vis.shortest_path(L, P).length
+            except (mk.errors.NoPathError, GeometryError) as exc:
+                if "outside" in str(exc):  # the mesh's box beyond a grid map
+                    continue
+                assert d[v, k] == math.inf, (L, P, d[v, k])
+                continue
+            assert math.isclose(d[v, k], want, rel_tol=1e-12, abs_tol=1e-12), (L, P, d[v, k], want)
+
+
 @pytest.mark.parametrize("kind", ["maze", "cave"])
 def test_mesh_equals_visibility_on_game_maps(kind):
     # dead ends (mazes) and pinches between diagonal blocks (caves): the mesh's lengths
@@ -513,6 +537,11 @@ def test_caves_mesh_equals_visibility(occ, data):
     mesh = mk.MotionPlanner.from_grid(occ, method="mesh")
     vis = mk.MotionPlanner.from_grid(occ, method="visibility")
     same_as_visibility(mesh, vis, pairs)
+    # with landmark tables whatever the detour (min_detour -1): exact distances, the same
+    # lengths
+    mesh._core.make_landmarks(data.draw(st.integers(1, 8)), -1.0)
+    check_landmark_tables(mesh, vis)
+    same_as_visibility(mesh, vis, pairs)
 
 
 def _cave(n, seed):
@@ -562,6 +591,10 @@ def test_zero_width_passages_against_oracle_and_visibility(obs, data, robot):
     check_many(pl, oracle_of(pl), pairs)
     vis = mk.MotionPlanner(obs, robot=robot, workspace=ws, method="visibility")
     same_as_visibility(pl, vis, pairs)
+    # with landmark tables whatever the detour (min_detour -1)
+    pl._core.make_landmarks(data.draw(st.integers(1, 6)), -1.0)
+    check_landmark_tables(pl, vis)
+    same_as_visibility(pl, vis, pairs)
 
 
 def test_zero_width_network_bends_branches_and_meets_the_box():
@@ -583,16 +616,23 @@ def test_zero_width_network_bends_branches_and_meets_the_box():
     assert p.points.tolist()[1:3] == [[0, 4], [0, 5]] or len(p.points) > 2
 
 
+def touching_rectangles(n, rng):
+    """n x n rectangles, one per cell of side 100, each side on the cell border with
+    probability 0.3 (else 5-29 inside): neighbours and the box share parts of edges."""
+    obs = []
+    for i in range(n):
+        for j in range(n):
+            ins = np.where(rng.random(4) < 0.3, 0, rng.integers(5, 30, 4))
+            obs.append(sq(100 * i + ins[0], 100 * j + ins[1],
+                          100 * (i + 1) - ins[2], 100 * (j + 1) - ins[3]))  # fmt: skip
+    return obs
+
+
 def test_touching_rectangles_at_scale_equal_the_visibility_graph():
     # 400 rectangles, one per cell of a 20 x 20 grid, each side on the cell border with
     # probability 0.3: dozens of passages between neighbours and along the box
     rng = np.random.default_rng(5)
-    obs = []
-    for i in range(20):
-        for j in range(20):
-            ins = np.where(rng.random(4) < 0.3, 0, rng.integers(5, 30, 4))
-            obs.append(sq(100 * i + ins[0], 100 * j + ins[1],
-                          100 * (i + 1) - ins[2], 100 * (j + 1) - ins[3]))  # fmt: skip
+    obs = touching_rectangles(20, rng)
     ws = (0, 0, 2000, 2000)
     mesh = mk.MotionPlanner(obs, workspace=ws, method="mesh")
     assert len(mesh._core.zero_width()) > 50
@@ -617,6 +657,7 @@ def test_bridge_pruning_keeps_lengths_and_prunes():
     rng = np.random.default_rng(4)
     pts = [(c + 0.5, r + 0.5) for r, c in free[rng.integers(len(free), size=120)].tolist()]
     nodes = {True: 0, False: 0}
+    core.use_landmarks = core.use_dominance = False  # the bridges alone
     for s, g in zip(pts[0::2], pts[1::2]):
         res = {}
         for prune in (True, False):
@@ -626,8 +667,57 @@ def test_bridge_pruning_keeps_lengths_and_prunes():
             nodes[prune] += core.counters()[0]
         assert res[True][0] == res[False][0]
         assert math.isclose(res[True][1], res[False][1], rel_tol=1e-12), (s, g)
-    core.prune = True
+    core.prune = core.use_landmarks = core.use_dominance = True
     assert nodes[False] > 1.4 * nodes[True], nodes
+
+
+# --------------------------------------------------------------------------------------
+# landmark lower bounds and dominated intervals: the tables are geodesic distances (the
+# visibility graph's), and the search with them keeps the visibility graph's lengths
+
+
+def test_landmarks_and_dominance_keep_lengths_and_prune():
+    # touching rectangles in a 16 x 16 grid (streets with zero-width passages): the
+    # search with the landmark bounds and the dominance pruning, with either, and with
+    # neither gives the same lengths (those of the visibility graph), and the two cut the
+    # nodes expanded
+    rng = np.random.default_rng(7)
+    obs = touching_rectangles(16, rng)
+    ws = (0, 0, 1600, 1600)
+    pl = mk.MotionPlanner(obs, workspace=ws, method="mesh")
+    vis = mk.MotionPlanner(obs, workspace=ws, method="visibility")
+    core = pl._core
+    assert len(core.landmarks()[0]) == 8  # the streets' detour asks for the tables
+    check_landmark_tables(pl, vis)
+    free = [tuple(map(int, p)) for p in rng.integers(0, 1601, (300, 2))]
+    free = [p for p in free if pl.is_free([p]).all()][:80]
+    nodes = {}
+    for lmk, dom in [(True, True), (True, False), (False, True), (False, False)]:
+        core.use_landmarks, core.use_dominance = lmk, dom
+        nodes[lmk, dom] = 0
+        for s, g in zip(free[0::2], free[1::2]):
+            st_, _, path = core.query(*map(float, s), *map(float, g))
+            assert st_ == 0
+            got = float(np.hypot(*np.diff(path, axis=0).T).sum())
+            assert math.isclose(got, vis.shortest_path(s, g).length, rel_tol=1e-12), (s, g)
+            nodes[lmk, dom] += core.counters()[0]
+    core.use_landmarks = core.use_dominance = True
+    assert nodes[False, False] > 2 * nodes[True, True], nodes
+    assert nodes[False, False] > nodes[True, False] and nodes[False, False] > nodes[False, True]
+
+
+def test_no_landmarks_where_they_would_not_pay():
+    # small convex obstacles far apart: probe paths are barely longer than the distance,
+    # so no tables are made; a perfect maze: long detours, but the bridges already keep
+    # the search on the path, so the tables do not cut the probes' nodes and are dropped
+    obs = [sq(100 * i + 40, 100 * j + 40, 100 * i + 50, 100 * j + 50)
+           for i in range(10) for j in range(10)]  # fmt: skip
+    pl = mk.MotionPlanner(obs, workspace=(0, 0, 1000, 1000), method="mesh")
+    assert len(pl._core.landmarks()[0]) == 0
+    maze = mk.MotionPlanner.from_grid(_maze(12, 3), method="mesh")
+    assert len(maze._core.landmarks()[0]) == 0
+    maze._core.make_landmarks(4, -1.0)  # forced: made and kept
+    assert len(maze._core.landmarks()[0]) == 4
 
 
 def test_read_scenario(tmp_path):

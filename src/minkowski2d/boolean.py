@@ -106,8 +106,17 @@ class _Arrays:
 
     __slots__ = ("xy", "ro", "po", "to")
 
-    def __init__(self, geoms: np.ndarray) -> None:
-        self.xy, self.ro, self.po, self.to = polygon_arrays(geoms)
+    def __init__(self, geoms: np.ndarray | None = None) -> None:
+        if geoms is not None:
+            self.xy, self.ro, self.po, self.to = polygon_arrays(geoms)
+
+    def tasks(self, first: int, count: int) -> _Arrays:
+        """Tasks [first, first + count) alone (the same polygon arrays): one operand of
+        operands read together."""
+        part = _Arrays()
+        part.xy, part.ro, part.po = self.xy, self.ro, self.po
+        part.to = self.to[first : first + count + 1]
+        return part
 
     def rings(self, t: int) -> Rings:
         """Task t's polygons as :class:`Rings` (for naming a ring in an error)."""
@@ -179,11 +188,12 @@ def _binary(op: str, a: Any, b: Any, fill_rule: Any, threads: int) -> Any:
     ga, gb, labels = _paired(
         box, ga, gb, lambda: _polygonal(a, "a"), lambda: _polygonal(b, "b"), ("a", "b")
     )
-    A, B = _Arrays(ga), _Arrays(gb)
+    T = len(ga)
+    both = _Arrays(np.concatenate([ga, gb]))  # both operands in one reading
+    A, B = both.tasks(0, T), both.tasks(T, T)
     xy, ro, po, to, info = core.boolean_f(
-        A.xy, A.ro, A.po, A.to, B.xy, B.ro, B.po, B.to,
-        rule, validate, threads, _NO_LIMIT, _NO_LIMIT,
-    )  # fmt: skip
+        both.xy, both.ro, both.po, A.to, B.to, rule, validate, threads, _NO_LIMIT, _NO_LIMIT
+    )
     _raise(info, (A, B), ("a", "b"), labels)
     out = _shapes(xy, ro, po, to)
     if box is None:
@@ -347,10 +357,9 @@ def union_all(geoms: Any, *, fill_rule: str | None = None) -> Any:
     A = _Arrays(cast(np.ndarray, members))  # built above, or by _members with a box
     per_member = A.to.copy()
     A.to = np.array([0, per_member[-1]], np.int64)
-    B = _Arrays(np.empty(0, dtype=object))
-    B.to = np.zeros(2, np.int64)
+    no_b = np.array([per_member[-1], per_member[-1]], np.int64)  # no polygons
     xy, ro, po, to, info = core.boolean_f(
-        A.xy, A.ro, A.po, A.to, B.xy, B.ro, B.po, B.to,
+        A.xy, A.ro, A.po, A.to, no_b,
         core.OVERLAY_UNION + 4 * fill, validate, 1, _NO_LIMIT, _NO_LIMIT,
     )  # fmt: skip
     status = int(info[0, 0])
@@ -459,8 +468,9 @@ def clip_lines(
     shapely LineString or MultiLineString
         The parts kept (a point set: where lines run over each other, that stretch comes
         out once), each following the direction of the input line, joined where two
-        meet; an empty LineString when nothing is kept. Points where a line only touches
-        the region are not parts. Crossing vertices are the correctly rounded exact ones.
+        meet, in lexicographic order of their vertices; an empty LineString when nothing
+        is kept. Points where a line only touches the region are not parts. Crossing
+        vertices are the correctly rounded exact ones.
 
     Examples
     --------

@@ -1,12 +1,14 @@
 // boolean.cpp -- bindings of the polygon booleans and line clipping (boolean.hpp).
 //
-//   boolean_f(A: xy (N, 2), ring_off, poly_off, task_off (T + 1,), B: the same, rule,
-//             validate, threads, max_crossings, max_pairs)
+//   boolean_f(xy (N, 2), ring_off, poly_off, a_task_off (T + 1,), b_task_off (T + 1,),
+//             rule, validate, threads, max_crossings, max_pairs)
 //       -> (xy (M, 2) closed rings, ring_off, poly_off, task_off (T + 1,), info (T, 5))
 //   clip_lines_f(lines: xy, line_off, task_off, polygons: xy, ring_off, poly_off,
 //                task_off, fill, validate, keep_inside, threads, max_crossings, max_pairs)
 //       -> (xy (M, 2), line_off, task_off (T + 1,), info (T, 5))
-// Task t is A's polygons [task_off[t], task_off[t + 1]) against B's. info rows: status,
+// Task t is the polygons [a_task_off[t], a_task_off[t + 1]) (operand a) against
+// [b_task_off[t], b_task_off[t + 1]) (operand b), both of the one set of polygon arrays
+// (one reading of both operands); clip_lines_f's polygons are task_off's. info rows: status,
 // operand, reason, ring (inside the operand), vertex. The offsets come from
 // minkowski2d.boolean (not from users): malformed ones are a ValueError.
 #include <nanobind/nanobind.h>
@@ -27,13 +29,16 @@ using mk::i64;
 namespace mk_bind {
 namespace {
 
+// the polygon arrays' offsets, and task offsets into them: all polygons in order
+// (whole), or any ascending range of them
 void check_polys(const In2<double>& X, const In1<i64>& RO, const In1<i64>& PO,
-                 const In1<i64>& TO, i64 T) {
+                 const In1<i64>& TO, i64 T, bool whole = true) {
   if (X.shape(1) != 2) throw nb::value_error("boolean: coordinates must have shape (n, 2)");
   const i64 n = (i64)X.shape(0), R = (i64)RO.shape(0) - 1, P = (i64)PO.shape(0) - 1;
   const i64 *ro = RO.data(), *po = PO.data(), *to = TO.data();
   if (R < 0 || P < 0 || ro[0] != 0 || ro[R] != n || po[0] != 0 || po[P] != R ||
-      (i64)TO.shape(0) != T + 1 || to[0] != 0 || to[T] != P)
+      (i64)TO.shape(0) != T + 1 || (whole && (to[0] != 0 || to[T] != P)) || to[0] < 0 ||
+      to[T] > P)
     throw nb::value_error("boolean: bad offsets");
   for (i64 r = 0; r < R; ++r)
     if (ro[r + 1] < ro[r]) throw nb::value_error("boolean: bad offsets");
@@ -56,13 +61,12 @@ Out<double> info_array(const std::vector<mk::bop::Fault>& f, const std::vector<i
   return owned(o, (std::size_t)T, 5);
 }
 
-nb::tuple boolean_f(In2<double> AX, In1<i64> ARO, In1<i64> APO, In1<i64> ATO, In2<double> BX,
-                    In1<i64> BRO, In1<i64> BPO, In1<i64> BTO, int rule, bool validate,
-                    int threads, i64 max_crossings, i64 max_pairs) {
+nb::tuple boolean_f(In2<double> X, In1<i64> RO, In1<i64> PO, In1<i64> ATO, In1<i64> BTO,
+                    int rule, bool validate, int threads, i64 max_crossings, i64 max_pairs) {
   const i64 T = (i64)ATO.shape(0) - 1;
   if (T < 0) throw nb::value_error("boolean: bad offsets");
-  check_polys(AX, ARO, APO, ATO, T);
-  check_polys(BX, BRO, BPO, BTO, T);
+  check_polys(X, RO, PO, ATO, T, false);
+  check_polys(X, RO, PO, BTO, T, false);
   if (!mk::ov::rule_valid(rule)) throw nb::value_error("boolean: unknown rule");
   std::vector<mk::ov::Rings> res((std::size_t)T);
   std::vector<mk::bop::Fault> faults((std::size_t)T);
@@ -70,8 +74,8 @@ nb::tuple boolean_f(In2<double> AX, In1<i64> ARO, In1<i64> APO, In1<i64> ATO, In
   {
     nb::gil_scoped_release nogil;
     mk::parallel_tasks(T, threads, [&](i64 t) {
-      mk::bop::Polys a{AX.data(), ARO.data(), APO.data(), ATO.data()[t], ATO.data()[t + 1]};
-      mk::bop::Polys b{BX.data(), BRO.data(), BPO.data(), BTO.data()[t], BTO.data()[t + 1]};
+      mk::bop::Polys a{X.data(), RO.data(), PO.data(), ATO.data()[t], ATO.data()[t + 1]};
+      mk::bop::Polys b{X.data(), RO.data(), PO.data(), BTO.data()[t], BTO.data()[t + 1]};
       mk::bop::boolean(a, b, rule, validate, lim, res[t], faults[t]);
     });
   }
@@ -171,9 +175,8 @@ nb::tuple clip_lines_f(In2<double> LX, In1<i64> LO, In1<i64> LT, In2<double> AX,
 }  // namespace
 
 void bind_boolean(nb::module_& m) {
-  m.def("boolean_f", &boolean_f, "a_xy"_a.noconvert(), "a_ring_off"_a.noconvert(),
-        "a_poly_off"_a.noconvert(), "a_task_off"_a.noconvert(), "b_xy"_a.noconvert(),
-        "b_ring_off"_a.noconvert(), "b_poly_off"_a.noconvert(), "b_task_off"_a.noconvert(),
+  m.def("boolean_f", &boolean_f, "xy"_a.noconvert(), "ring_off"_a.noconvert(),
+        "poly_off"_a.noconvert(), "a_task_off"_a.noconvert(), "b_task_off"_a.noconvert(),
         "rule"_a, "validate"_a, "threads"_a, "max_crossings"_a, "max_pairs"_a);
   m.def("clip_lines_f", &clip_lines_f, "l_xy"_a.noconvert(), "l_off"_a.noconvert(),
         "l_task_off"_a.noconvert(), "a_xy"_a.noconvert(), "a_ring_off"_a.noconvert(),

@@ -110,6 +110,12 @@ inline void boolean(const Polys& a, const Polys& b, int rule, bool validate, con
   if (f.status != OK) return;
   ov::Geo g;
   std::vector<ov::EdgeIn> in;
+  const std::size_t nv = (std::size_t)(a.ro[a.po[a.p1]] - a.ro[a.po[a.p0]] +
+                                       b.ro[b.po[b.p1]] - b.ro[b.po[b.p0]]);
+  g.pts.reserve(nv);
+  g.lines.reserve(nv);
+  g.verts.reserve(nv);
+  in.reserve(nv);
   add_polys(g, a, w, 0, 0, in);
   add_polys(g, b, w, na, 1, in);
   ov::Overlay o(g);

@@ -112,14 +112,28 @@ struct BoxScratch {
   std::vector<Box> sorted;
 };
 
-// box_pairs_grouped for few boxes: sorted by the left side, each box scans forward over
-// the boxes that start before its right side ends (contiguous, no active lists).
+// box_pairs_grouped for few boxes: sorted by the lower side along one axis, each box scans
+// forward over the boxes that start before it ends (contiguous, no active lists). The
+// axis is box_pairs' (the thinner one relative to the spread: shorter scans).
 template <class F>
 inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const double* ymin,
                            const double* ymax, const int* group, BoxScratch& s, F&& on_pair) {
   auto& b = s.sorted;
   b.resize(n);
-  for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
+  double wx = 0, wy = 0, X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
+  for (i64 i = 0; i < n; ++i) {
+    wx += xmax[i] - xmin[i];
+    wy += ymax[i] - ymin[i];
+    X0 = std::min(X0, xmin[i]);
+    X1 = std::max(X1, xmax[i]);
+    Y0 = std::min(Y0, ymin[i]);
+    Y1 = std::max(Y1, ymax[i]);
+  }
+  const bool use_y = (wy / (Y1 - Y0)) < (wx / (X1 - X0));  // false for NaN
+  if (use_y)  // the same scan with the axes swapped
+    for (i64 i = 0; i < n; ++i) b[i] = {ymin[i], ymax[i], xmin[i], xmax[i], i, group[i]};
+  else
+    for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
   std::sort(b.begin(), b.end(), [](const BoxScratch::Box& p, const BoxScratch::Box& q) {
     return p.x0 < q.x0 || (p.x0 == q.x0 && p.i < q.i);
   });

@@ -91,6 +91,32 @@ void bind_mesh_planner(nb::module_& m) {
       .def("counters",
            [](const MP& self) { return nb::make_tuple(self.n_expanded, self.n_pushed); })
       .def_rw("prune", &MP::prune)  // the bridge pruning (on; tests turn it off)
+      // the landmark bounds (used by the queries; tests turn them off), the pruning of
+      // dominated intervals likewise, the tables made again (n landmarks, where the
+      // probes' median detour reaches min_detour and the tables cut their nodes; -1:
+      // always) and the tables: (landmark ids (K,), the search vertices (n, 2), their
+      // distances to the landmarks (n, K); +inf: not reached; none: an empty array)
+      .def_rw("use_landmarks", &MP::use_landmarks)
+      .def_rw("use_dominance", &MP::use_dominance)
+      .def("make_landmarks",
+           [](MP& self, int n, double min_detour) {
+             self.n_landmarks = n;
+             self.min_detour = min_detour;
+             nb::gil_scoped_release nogil;
+             self.build_landmarks();
+           })
+      .def("landmarks",
+           [](const MP& self) {
+             const std::size_t n = (std::size_t)self.lm.n, K = (std::size_t)self.lm.K;
+             std::vector<i64> at(self.lm.at.begin(), self.lm.at.end());
+             std::vector<double> xy(2 * n), d = self.lm.d;
+             for (std::size_t v = 0; v < n; ++v) {
+               xy[2 * v] = self.idx((int)v);
+               xy[2 * v + 1] = self.idy((int)v);
+             }
+             return nb::make_tuple(to_numpy(at, at.size(), 0), to_numpy(xy, n, 2),
+                                   to_numpy(d, K ? n : 0, K));
+           })
       .def_ro("status", &MP::status);
   m.attr("MESH_OK") = (int)mk::MESH_OK;
   m.attr("MESH_INEXACT") = (int)mk::MESH_INEXACT;

@@ -34,10 +34,14 @@
 // its obstacle: where the line root-corner runs into the obstacle, or on along one of
 // its edges, no node is made. A junction inside a cone is a vertex node in every
 // direction (a path may pass the pinch). Root-level pruning (a vertex reached again at
-// no smaller length is not expanded again), the pruning at the mesh's bridges (below,
-// MeshPlanner) and the admissible heuristic of Polyanya (the shortest
+// no smaller length is not expanded again), the pruning at the mesh's bridges
+// (navmesh_bridges.hpp), the pruning of dominated intervals (an interval every point of
+// which a path through an end of its edge reaches strictly sooner: MeshPlanner::
+// dominated) and the larger of two admissible heuristics -- Polyanya's (the shortest
 // root-interval-target distance, the target mirrored across the edge when on the root's
-// side) make it A*. On the network: a portal in sight is a vertex node (one that only
+// side) and the landmark bound (navmesh_landmarks.hpp: exact geodesic distances to a few
+// landmarks, made at preparation where the straight line is a poor guide) -- make it
+// A*. On the network: a portal in sight is a vertex node (one that only
 // goes on along the segments where no path bends there in the mesh); a node moves along
 // a segment to its other end; a mesh vertex reached that way expands its whole fan; a
 // start or goal on a segment attaches to its ends. Lengths are doubles: as in the
@@ -54,7 +58,9 @@
 #include <vector>
 
 #include "exact.hpp"
+#include "navmesh_bridges.hpp"
 #include "navmesh_build.hpp"
+#include "navmesh_landmarks.hpp"
 #include "navnet.hpp"
 #include "planning.hpp"
 #include "planning_queries.hpp"
@@ -93,6 +99,8 @@ struct MeshScratch {
   std::vector<int> ppolys;    // the bridge pruning's targets (tpolys, or the polygons
                               // around the portals of the goal's zero-width network)
   std::vector<std::pair<int, double>> satt, gatt;  // start / goal on the network: ends
+  std::vector<std::pair<int, double>> tseen;       // the vertices the goal sees, lengths
+  LandmarkQuery lq;           // the landmark bounds of the query (navmesh_landmarks.hpp)
   std::vector<int> fan;       // the search's own buffers, kept between queries
   std::vector<std::pair<double, int>> heap;
   void init(int nv, int np) {
@@ -111,106 +119,22 @@ struct MeshPlanner {
   // counters of the last query (tests and benchmarks)
   mutable i64 n_expanded = 0, n_pushed = 0;
 
-  // Cul-de-sac pruning (Polyanya's dead ends, generalised). In the graph of the polygons
-  // (joined by their shared edges, and all polygons around a junction joined to each
-  // other: a path may pass the pinch), a bridge is a mesh edge e whose removal splits the
-  // graph. A path that crosses e into the side without the target must leave that side
-  // again, and only through the closed segment e; the part in between is no shorter than
-  // the segment on e between the two points (free: e is a mesh edge). So no interval is
-  // pushed across a bridge into a side without a target polygon, and a vertex node does
-  // not expand the polygons around it that a bridge at the vertex separates from every
-  // target polygon. The bends at e's ends are pushed by the node that reached e.
-  // bsub: per polygon edge slot, the child polygon c of its bridge in the DFS tree (the
-  // side of c is the subtree: ptin[c] <= ptin[x] < ptout[c]), -1 for no bridge;
-  // vb (CSR vboff): per vertex, the children of the bridges that end at it.
-  std::vector<int> bsub, ptin, ptout, vboff, vb;
+  MeshBridges br;  // the cul-de-sac pruning (navmesh_bridges.hpp)
   bool prune = true;  // the bridge pruning on (tests compare the search without it)
-
-  void find_bridges() {
-    const int P = M.npoly(), H = (int)M.pv.size(), NV = M.nvert();
-    std::vector<int> owner(H);
-    for (int p = 0; p < P; ++p)
-      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) owner[i] = p;
-    auto twin = [&](int i) { return M.poff[M.pn[i]] + M.pe[i]; };
-    // adjacency (polygon, (neighbour, edge id)): a mesh edge by its lower slot, the
-    // links around a junction (a star at its first polygon) numbered from H
-    std::vector<std::pair<int, std::pair<int, int>>> arcs;
-    for (int i = 0; i < H; ++i)
-      if (M.pn[i] >= 0) arcs.push_back({owner[i], {M.pn[i], std::min(i, twin(i))}});
-    int link = H;
-    for (int v = 0; v < NV; ++v)
-      if (M.vflag[v] & JUNCTION)
-        for (int t = M.vpoff[v] + 1; t < M.vpoff[v + 1]; ++t, ++link) {
-          arcs.push_back({M.vp[M.vpoff[v]], {M.vp[t], link}});
-          arcs.push_back({M.vp[t], {M.vp[M.vpoff[v]], link}});
-        }
-    // a zero-width network joins all polygons around its portals (a star likewise)
-    {
-      std::vector<std::pair<int, int>> cp;  // (component, polygon)
-      for (int v = 0; v < NV; ++v)
-        if (M.vflag[v] & PORTAL)
-          for (int t = M.vpoff[v]; t < M.vpoff[v + 1]; ++t) cp.push_back({net.comp[v], M.vp[t]});
-      std::sort(cp.begin(), cp.end());
-      std::size_t h = 0;  // the component's first entry
-      for (std::size_t t = 0; t < cp.size(); ++t) {
-        if (t == 0 || cp[t].first != cp[t - 1].first) {
-          h = t;
-          continue;
-        }
-        if (cp[t] == cp[t - 1] || cp[t].second == cp[h].second) continue;
-        arcs.push_back({cp[h].second, {cp[t].second, link}});
-        arcs.push_back({cp[t].second, {cp[h].second, link}});
-        ++link;
-      }
-    }
-    std::vector<int> aoff;
-    std::vector<std::pair<int, int>> adj;
-    csr_from_pairs(P, arcs, aoff, adj);
-    // iterative Tarjan: tin / low, a tree edge (parent, child) is a bridge when
-    // low[child] > tin[parent]
-    ptin.assign(P, -1);
-    ptout.assign(P, 0);
-    bsub.assign(H, -1);
-    std::vector<int> low(P, 0), pedge(P, -1), it(P, 0), stack;
-    int timer = 0;
-    for (int s = 0; s < P; ++s) {
-      if (ptin[s] >= 0) continue;
-      ptin[s] = low[s] = timer++;
-      it[s] = aoff[s];
-      stack.push_back(s);
-      while (!stack.empty()) {
-        const int p = stack.back();
-        if (it[p] < aoff[p + 1]) {
-          const auto [q, id] = adj[it[p]++];
-          if (id == pedge[p]) continue;
-          if (ptin[q] < 0) {
-            ptin[q] = low[q] = timer++;
-            pedge[q] = id;
-            it[q] = aoff[q];
-            stack.push_back(q);
-          } else {
-            low[p] = std::min(low[p], ptin[q]);
-          }
-          continue;
-        }
-        stack.pop_back();
-        ptout[p] = timer;
-        if (stack.empty()) continue;
-        const int par = stack.back();
-        low[par] = std::min(low[par], low[p]);
-        if (low[p] > ptin[par] && pedge[p] < H) bsub[pedge[p]] = bsub[twin(pedge[p])] = p;
-      }
-    }
-    // the bridges at each vertex: both ends of every bridge edge, once per edge
-    std::vector<std::pair<int, int>> at;
-    for (int i = 0; i < H; ++i)
-      if (bsub[i] >= 0 && i < twin(i)) {
-        const int p = owner[i], j = i + 1 < M.poff[p + 1] ? i + 1 : M.poff[p];
-        at.push_back({M.pv[i], bsub[i]});
-        at.push_back({M.pv[j], bsub[i]});
-      }
-    csr_from_pairs(NV, at, vboff, vb);
-  }
+  // landmark lower bounds (navmesh_landmarks.hpp): n_landmarks tables made at build,
+  // used by the queries while use_landmarks (tests compare the search without them)
+  MeshLandmarks lm;
+  int n_landmarks = 8;
+  // the tables are made only where shortest paths between probe pairs are longer than
+  // the straight distance by this fraction on the median (elsewhere Polyanya's
+  // heuristic is nearly exact and the tables would not pay for their preparation), and
+  // kept only where they cut the probes' nodes (min_detour < 0: made and kept always)
+  double min_detour = 0.02;
+  bool use_landmarks = true;
+  bool use_dominance = true;  // the pruning of dominated intervals (below)
+  // the rounding of lengths: a length summed over the search (at most nids() segments)
+  // is within eta of itself, relatively; scale: the meshed box's largest coordinate
+  double eta = 0, scale = 0;
 
   int build(const double* meshbox) {
     base.build_base();
@@ -220,9 +144,15 @@ struct MeshPlanner {
     build_navnet(base, M.vx, M.vy, net);
     for (int v = 0; v < M.nvert(); ++v)
       if (net.on(v)) M.vflag[v] |= PORTAL;
-    find_bridges();
+    br.build(M, net);
+    eta = 4.0 * (nids() + 16) * 0x1p-53;
+    scale = std::max({std::fabs(mb[0]), std::fabs(mb[1]), std::fabs(mb[2]), std::fabs(mb[3])});
+    build_landmarks();
     return status;
   }
+  void build_landmarks();  // after MeshSearch (its sweeps make the tables)
+  double probe(const std::vector<int>& cand, i64& expanded) const;
+  void sweep(int v, std::vector<double>& dist, MeshScratch& MS) const;
 
   // vertex ids of the search: the mesh's, then the network's extra vertices
   int nids() const { return net.size(); }
@@ -263,14 +193,6 @@ struct MeshPlanner {
     }
   }
 
-  // is a target polygon on polygon x's side of the bridge with child c?
-  bool target_side(const MeshScratch& MS, int x, int c) const {
-    const bool xin = ptin[c] <= ptin[x] && ptin[x] < ptout[c];
-    for (int t : MS.ppolys)
-      if ((ptin[c] <= ptin[t] && ptin[t] < ptout[c]) == xin) return true;
-    return false;
-  }
-
   static int side(const Lim& l, double rx, double ry, double x, double y) {
     return cross_sign(l.x1, l.y1, l.x2, l.y2, rx, ry, x, y);
   }
@@ -287,21 +209,56 @@ struct MeshPlanner {
     return std::hypot(dx, dy);
   }
 
-  // Polyanya's heuristic: the least |r x| + |x t| over x in the interval
-  double heuristic(const Node& N, const Root& r, double tx, double ty) const {
+  // Node N's interval on its edge a -> b (e = b - a, el = |e|): the fractions uL <= uR
+  // of e (0 at a) where its rays from the root r meet the edge's line, each moved
+  // outwards by a bound on its rounding error and clamped to [0, 1] (the whole edge
+  // where that bound is not small), so that the exact interval [p, q] lies inside.
+  struct Span {
+    int a, b;
+    double ax, ay, ex, ey, el, uL, uR;
+    double x(double u) const { return ax + u * ex; }
+    double y(double u) const { return ay + u * ey; }
+  };
+  void span(const Node& N, const Root& r, Span& E) const {
+    constexpr double eps = 0x1p-53;
     const int off = M.poff[N.poly], m = M.poff[N.poly + 1] - off;
-    const int a = M.pv[off + N.k], b = M.pv[off + (N.k + 1) % m];
-    const double ax = M.vx[a], ay = M.vy[a], bx = M.vx[b], by = M.vy[b];
-    const double ex = bx - ax, ey = by - ay;
-    auto param = [&](const Lim& l) {  // where the ray meets line(a, b), as a fraction
+    E.a = M.pv[off + N.k];
+    E.b = M.pv[off + (N.k + 1 == m ? 0 : N.k + 1)];
+    E.ax = M.vx[E.a], E.ay = M.vy[E.a], E.ex = M.vx[E.b] - E.ax, E.ey = M.vy[E.b] - E.ay;
+    E.el = dist(0, 0, E.ex, E.ey);
+    bool whole = false;
+    // where the ray meets the edge's line, as a fraction, and its rounding error bound
+    auto param = [&](const Lim& l, double& err) {
       const double dx = l.x2 - l.x1, dy = l.y2 - l.y1;
-      const double den = dx * ey - dy * ex;
-      if (!(den != 0)) return 0.5;
-      const double u = (dx * (r.y - ay) - dy * (r.x - ax)) / den;
-      return std::min(1.0, std::max(0.0, u));
+      const double den = dx * E.ey - dy * E.ex, dabs = std::fabs(dx * E.ey) + std::fabs(dy * E.ex);
+      const double ny = dx * (r.y - E.ay), nx = dy * (r.x - E.ax);
+      const double u = (ny - nx) / den;
+      whole |= !(std::fabs(den) > 16 * eps * dabs);
+      err = 8 * eps * (std::fabs(ny) + std::fabs(nx) + std::fabs(u) * dabs) / std::fabs(den) +
+            2 * eps * std::fabs(u);
+      return u;
     };
-    double uL = param(N.L), uR = param(N.R);
-    if (uL > uR) std::swap(uL, uR);
+    double eL, eR;
+    E.uL = param(N.L, eL);
+    E.uR = param(N.R, eR);
+    if (E.uL > E.uR) {
+      std::swap(E.uL, E.uR);
+      std::swap(eL, eR);
+    }
+    if (whole || !(eL - eL == 0) || !(eR - eR == 0)) {
+      E.uL = 0;
+      E.uR = 1;
+      return;
+    }
+    E.uL = std::min(1.0, std::max(0.0, E.uL - eL));
+    E.uR = std::min(1.0, std::max(0.0, E.uR + eR));
+  }
+
+  // Polyanya's heuristic: the least |r x| + |x t| over x in the interval (dp = |r p|,
+  // dq = |r q|)
+  double heuristic(const Span& E, const Root& r, double dp, double dq, double tx,
+                   double ty) const {
+    const double ax = E.ax, ay = E.ay, ex = E.ex, ey = E.ey, uL = E.uL, uR = E.uR;
     // the target mirrored across the edge when on the root's side
     double px = tx, py = ty;
     const double el2 = ex * ex + ey * ey;
@@ -319,8 +276,42 @@ struct MeshPlanner {
       if (u >= uL && u <= uR) return dist(r.x, r.y, px, py);
     }
     const double lx = ax + uL * ex, ly = ay + uL * ey, rx = ax + uR * ex, ry = ay + uR * ey;
-    return std::min(dist(r.x, r.y, lx, ly) + dist(lx, ly, px, py),
-                    dist(r.x, r.y, rx, ry) + dist(rx, ry, px, py));
+    return std::min(dp + dist(lx, ly, px, py), dq + dist(rx, ry, px, py));
+  }
+
+  // the least |r x| over x in the interval (the sweep's order)
+  double interval_dist(const Span& E, const Root& r) const {
+    const double el2 = E.ex * E.ex + E.ey * E.ey;
+    double u = el2 > 0 ? ((r.x - E.ax) * E.ex + (r.y - E.ay) * E.ey) / el2 : 0.0;
+    u = std::min(E.uR, std::max(E.uL, u));
+    return dist(r.x, r.y, E.x(u), E.y(u));
+  }
+
+  // The landmark bound of a node (root r, interval [p, q] on edge a -> b, p nearer a,
+  // dp = |r p|, dq = |r q|): every path through it is at least g + |r x| + d(x, t) for
+  // an x there, and d(x, t) >= d(a, t) - |a x| (the edge is free), so at least
+  // g + |r q| + lb(a) - |a q| (|r x| - |a x| does not increase from p to q); likewise
+  // g + |r p| + lb(b) - |b p|; and g + lb(r).
+  double landmark_bound(const Span& E, const Root& r, double dp, double dq,
+                        LandmarkQuery& Q) const {
+    const double A = dq + Q.at(lm, E.a) - E.uR * E.el;
+    const double B = dp + Q.at(lm, E.b) - (1 - E.uL) * E.el;
+    const double R = r.v >= 0 ? Q.at(lm, r.v) : 0.0;
+    return std::max(R, std::max(A, B) - Q.slack);
+  }
+
+  // Dominated intervals. A node (root r, interval [p, q] on edge a -> b, p nearer a)
+  // reaches x there at g + |r x|; a path known to reach a at da reaches x at da + |a x|
+  // (along the free edge). Where da + |a x| < g + |r x| at every x of the interval
+  // (g + |r x| - |a x| does not increase from p to q: at q is enough), every path
+  // through the node is strictly longer than one through a: no shortest path passes it
+  // (it is not pushed). Likewise through b (at p). Strictly, by more than the rounding
+  // of the lengths: a shortest path is never lost, ties included.
+  bool dominated(const Span& E, const Root& r, double dp, double dq, double da,
+                 double db) const {
+    const double vq = r.g + dq, vp = r.g + dp;
+    return vq - (da + E.uR * E.el) > eta * (4 * vq + 64 * scale) ||
+           vp - (db + (1 - E.uL) * E.el) > eta * (4 * vp + 64 * scale);
   }
 
   // a PlanStatus (planning.hpp; PLAN_OUTSIDE_MESH: the caller meshes a larger box)
@@ -354,7 +345,17 @@ struct MeshPlanner {
                            M.vp.begin() + M.vpoff[v + 1]);
     }
     for (int p : MS.tpolys) MS.tmark[p] = 1;
+    if (use_landmarks && !lm.empty()) {
+      // the goal sees the vertices of its cells, or the ends it attaches to
+      MS.tseen.clear();
+      for (int p : MS.tpolys)
+        for (int i = M.poff[p]; i < M.poff[p + 1]; ++i)
+          MS.tseen.push_back({M.pv[i], dist(gx, gy, M.vx[M.pv[i]], M.vy[M.pv[i]])});
+      if (MS.tpolys.empty()) MS.tseen = MS.gatt;
+      MS.lq.target(lm, MS.tseen, scale);
+    }
     int st = search(sx, sy, gx, gy, out, MS);
+    MS.lq.clear();
     for (int p : MS.tpolys) MS.tmark[p] = 0;
     for (int v : MS.touched) MS.best[v] = std::numeric_limits<double>::infinity();
     MS.touched.clear();
@@ -378,10 +379,17 @@ struct MeshSearch {
   std::vector<Node>& nodes;
   std::vector<QE>& heap;
   const double tx, ty;
+  // sweep mode (rec: per vertex id, the least length it was seen with): no target, no
+  // bridge pruning, nodes in the order of their least length
+  double* rec;
+  const bool prune;
+  LandmarkQuery* lq;  // the query's landmark bounds, or none
 
-  MeshSearch(const MeshPlanner& planner, MeshScratch& ms, double tx_, double ty_)
+  MeshSearch(const MeshPlanner& planner, MeshScratch& ms, double tx_, double ty_,
+             double* rec_ = nullptr)
       : P(planner), M(planner.M), MS(ms), roots(ms.roots), nodes(ms.nodes), heap(ms.heap),
-        tx(tx_), ty(ty_) {
+        tx(tx_), ty(ty_), rec(rec_), prune(planner.prune && !rec_),
+        lq(ms.lq.on && !rec_ ? &ms.lq : nullptr) {
     roots.clear();
     nodes.clear();
     heap.clear();
@@ -407,13 +415,18 @@ struct MeshSearch {
     N.root = root;
     push(N);
   }
+  // the least length a path reaching vertex v is known with (+inf: none yet)
+  double known(int v) const { return rec ? std::min(rec[v], MS.best[v]) : MS.best[v]; }
+  void see(int v, double d) {
+    if (d < rec[v]) rec[v] = d;
+  }
   bool allowed(const Node& V, double x, double y) const {
     if (V.restr == 0) return true;
     return V.restr * side(V.R, M.vx[V.v], M.vy[V.v], x, y) >= 0;
   }
   void push_interval(int root, int nb, int k, const Lim& L, const Lim& R) {
-    const int c = P.bsub[M.poff[nb] + k];
-    if (P.prune && c >= 0 && !P.target_side(MS, nb, c)) return;
+    const int c = P.br.bsub[M.poff[nb] + k];
+    if (prune && c >= 0 && !P.br.target_side(MS.ppolys, nb, c)) return;
     Node N{};
     N.kind = 0;
     N.root = root;
@@ -422,7 +435,16 @@ struct MeshSearch {
     N.L = L;
     N.R = R;
     N.g = roots[root].g;
-    N.f = N.g + P.heuristic(N, roots[root], tx, ty);
+    const Root& r = roots[root];
+    MeshPlanner::Span E;
+    P.span(N, r, E);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const double da = P.use_dominance ? known(E.a) : inf, db = P.use_dominance ? known(E.b) : inf;
+    const double dp = dist(r.x, r.y, E.x(E.uL), E.y(E.uL));
+    const double dq = dist(r.x, r.y, E.x(E.uR), E.y(E.uR));
+    if ((da < inf || db < inf) && P.dominated(E, r, dp, dq, da, db)) return;
+    N.f = N.g + (rec ? P.interval_dist(E, r) : P.heuristic(E, r, dp, dq, tx, ty));
+    if (lq) N.f = std::max(N.f, N.g + P.landmark_bound(E, r, dp, dq, *lq));
     push(N);
   }
   void push_vertex(int v, int parent, double g, int restr, int e1, const Lim& line,
@@ -435,7 +457,8 @@ struct MeshSearch {
     N.v = v;
     N.root = parent;
     N.g = g;
-    N.f = g + dist(P.idx(v), P.idy(v), tx, ty);
+    N.f = rec ? g : g + dist(P.idx(v), P.idy(v), tx, ty);
+    if (lq) N.f = std::max(N.f, g + lq->at(P.lm, v));
     N.restr = restr;
     N.e1 = e1;
     N.net = on_net || v >= M.nvert();
@@ -517,8 +540,8 @@ struct MeshSearch {
   }
   // does a bridge ending at vertex v separate polygon Z from every target polygon?
   bool cut_off(int v, int Z) const {
-    for (int t = P.vboff[v]; t < P.vboff[v + 1]; ++t)
-      if (!P.target_side(MS, Z, P.vb[t])) return true;
+    for (int t = P.br.vboff[v]; t < P.br.vboff[v + 1]; ++t)
+      if (!P.br.target_side(MS.ppolys, Z, P.br.vb[t])) return true;
     return false;
   }
   // a root at point (x, y) (vertex v or -1): nodes for the far edges of its polygons
@@ -526,9 +549,12 @@ struct MeshSearch {
     const double rx = roots[root].x, ry = roots[root].y, g = roots[root].g;
     for (int Z : fan) {
       if (V && V->e1 >= 0 && beyond_edge(*V, Z)) continue;
-      if (V && P.prune && cut_off(V->v, Z)) continue;
+      if (V && prune && cut_off(V->v, Z)) continue;
       if (MS.tmark[Z] && (!V || allowed(*V, tx, ty))) push_final(root, g + dist(rx, ry, tx, ty));
       const int off = M.poff[Z], m = M.poff[Z + 1] - off;
+      if (rec)  // the root sees every vertex of its convex polygon
+        for (int i = off; i < off + m; ++i)
+          see(M.pv[i], g + dist(rx, ry, M.vx[M.pv[i]], M.vy[M.pv[i]]));
       for (int i = 0; i < m; ++i) {  // the polygon's corners and junctions: in sight
         const int u = M.pv[off + i];
         if ((M.vflag[u] || goal_end(u)) && u != roots[root].v &&
@@ -612,6 +638,9 @@ struct MeshSearch {
       L[j] = side(N.L, rx, ry, M.vx[c[j]], M.vy[c[j]]);
       R[j] = side(N.R, rx, ry, M.vx[c[j]], M.vy[c[j]]);
     }
+    if (rec)  // the vertices in the closed cone: seen through the interval
+      for (int j = 0; j < m; ++j)
+        if (L[j] <= 0 && R[j] >= 0) see(c[j], g + dist(rx, ry, M.vx[c[j]], M.vy[c[j]]));
     if (MS.tmark[Pl] && side(N.L, rx, ry, tx, ty) <= 0 && side(N.R, rx, ry, tx, ty) >= 0)
       push_final(rid, g + dist(rx, ry, tx, ty));
     for (int j = 0; j + 1 < m; ++j) {
@@ -678,6 +707,122 @@ struct MeshSearch {
 inline int MeshPlanner::search(double sx, double sy, double tx, double ty,
                                std::vector<double>& out, MeshScratch& MS) const {
   return MeshSearch(*this, MS, tx, ty).run(sx, sy, out);
+}
+
+// The lengths of shortest paths from mesh vertex v to every search vertex id (+inf where
+// none): a sweep of the whole part of the mesh that v reaches (navmesh_landmarks.hpp).
+inline void MeshPlanner::sweep(int v, std::vector<double>& dist, MeshScratch& MS) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  if ((int)MS.best.size() != nids() || (int)MS.tmark.size() != M.npoly())
+    MS.init(nids(), M.npoly());
+  MS.spolys.assign(M.vp.begin() + M.vpoff[v], M.vp.begin() + M.vpoff[v + 1]);
+  MS.satt.clear();
+  MS.gatt.clear();
+  MS.ppolys.clear();
+  dist.assign(nids(), inf);
+  std::vector<double> out;
+  MeshSearch(*this, MS, M.vx[v], M.vy[v], dist.data()).run(M.vx[v], M.vy[v], out);
+  for (int u : MS.touched) {
+    dist[u] = std::min(dist[u], MS.best[u]);
+    MS.best[u] = inf;
+  }
+  MS.touched.clear();
+}
+
+// The median detour (length / distance - 1) of shortest paths between probe pairs of
+// the vertices cand, a fraction of the box's diagonal apart, and the nodes the searches
+// expanded (the same pairs at every call).
+inline double MeshPlanner::probe(const std::vector<int>& cand, i64& expanded) const {
+  expanded = 0;
+  if (cand.size() < 2) return 0;
+  PlanScratch S;
+  S.init((std::size_t)base.items());
+  MeshScratch MS;
+  std::vector<double> out, ex;
+  std::uint64_t x = 0x9E3779B97F4A7C15ull;
+  auto next = [&]() {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    return cand[x % cand.size()];
+  };
+  const double diag = dist(mb[0], mb[1], mb[2], mb[3]);
+  for (int t = 0; t < 200 && ex.size() < 12; ++t) {
+    const int u = next(), w = next();
+    const double ux = M.vx[u], uy = M.vy[u], wx = M.vx[w], wy = M.vy[w];
+    const double e = dist(ux, uy, wx, wy);
+    if (!(e >= diag / 16 && e <= diag / 4)) continue;
+    int grp;
+    const int st = query(ux, uy, wx, wy, out, grp, S, MS);
+    expanded += n_expanded;
+    if (st != PLAN_OK) continue;
+    double len = 0;
+    for (std::size_t i = 2; i + 1 < out.size(); i += 2)
+      len += dist(out[i - 2], out[i - 1], out[i], out[i + 1]);
+    ex.push_back(len / e - 1);
+  }
+  if (ex.empty()) return 0;
+  std::sort(ex.begin(), ex.end());
+  return ex[ex.size() / 2];
+}
+
+// The landmark tables: n_landmarks landmarks chosen farthest-first, the first the vertex
+// of the largest connected part of the mesh farthest from that part's centre.
+inline void MeshPlanner::build_landmarks() {
+  lm = MeshLandmarks{};
+  lm.n = nids();
+  lm.eta = eta;
+  const int P = M.npoly();
+  if (n_landmarks <= 0 || P == 0) return;
+  std::vector<int> size(P, 0);
+  for (int p = 0; p < P; ++p) ++size[br.pcomp[p]];
+  const int big = (int)(std::max_element(size.begin(), size.end()) - size.begin());
+  double cx = 0, cy = 0, cn = 0;
+  for (int p = 0; p < P; ++p)
+    if (br.pcomp[p] == big)
+      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) {
+        cx += M.vx[M.pv[i]];
+        cy += M.vy[M.pv[i]];
+        cn += 1;
+      }
+  cx /= cn;
+  cy /= cn;
+  int v = -1;
+  double far = -1;
+  for (int p = 0; p < P; ++p)
+    if (br.pcomp[p] == big)
+      for (int i = M.poff[p]; i < M.poff[p + 1]; ++i) {
+        const double d = dist(cx, cy, M.vx[M.pv[i]], M.vy[M.pv[i]]);
+        if (d > far) {
+          far = d;
+          v = M.pv[i];
+        }
+      }
+  std::vector<int> cand;
+  for (int p = 0; p < P; ++p)
+    if (br.pcomp[p] == big)
+      cand.insert(cand.end(), M.pv.begin() + M.poff[p], M.pv.begin() + M.poff[p + 1]);
+  std::sort(cand.begin(), cand.end());
+  cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  i64 before = 0, after = 0;
+  if (min_detour >= 0 && probe(cand, before) < min_detour) return;
+  MeshScratch MS;
+  std::vector<double> dist;
+  // kept where they cut the probes' nodes by a tenth (not where the bridges already
+  // confine the search to the path, as in a perfect maze): checked when half of them
+  // are made (the others are not made then), and at the end
+  auto pays = [&]() {
+    if (min_detour < 0) return true;
+    probe(cand, after);
+    return 10 * (before - after) >= before;
+  };
+  for (int l = 0; l < n_landmarks && v >= 0; ++l) {
+    sweep(v, dist, MS);
+    lm.add(v, dist);
+    v = lm.farthest(M.nvert());
+    if (2 * (l + 1) == n_landmarks && !pays()) break;
+  }
+  if (!pays()) lm = MeshLandmarks{};
 }
 
 // ------------------------------------------------------------------------------------

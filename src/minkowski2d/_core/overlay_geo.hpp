@@ -342,12 +342,14 @@ class Geo {
   }
 
   // rounded coordinates of vertex v
-  void rounded(i64 v, double& x, double& y) const {
+  void rounded(i64 v, double& x, double& y) const { round_vertex(v, x, y, false); }
+  // rounded(), returning rounds_exactly() when `check` (else false)
+  bool round_vertex(i64 v, double& x, double& y, bool check) const {
     const Vert& V = verts[v];
     if (V.p >= 0) {
       x = pts[V.p].x.hi;
       y = pts[V.p].y.hi;
-      return;
+      return check && plain(pts[V.p]);
     }
     // the crossing of a vertical and a horizontal line through plain points: read off
     const Line &L1 = lines[V.l1], &L2 = lines[V.l2];
@@ -356,12 +358,12 @@ class Geo {
       if (p1.x.hi == q1.x.hi && p2.y.hi == q2.y.hi) {
         x = p1.x.hi;
         y = p2.y.hi;
-        return;
+        return check;
       }
       if (p1.y.hi == q1.y.hi && p2.x.hi == q2.x.hi) {
         x = p2.x.hi;
         y = p1.y.hi;
-        return;
+        return check;
       }
     }
     // extended precision with a certified bound; exact when it cannot certify
@@ -377,11 +379,13 @@ class Geo {
     FEL t = fe_div(N, D);
     x = certified(L(a.x) + (L(b.x) - L(a.x)) * t);
     y = certified(L(a.y) + (L(b.y) - L(a.y)) * t);
-    if (x == x && y == y) return;
-    Dy X, Y, W;
-    exact(v, X, Y, W);
-    if (x != x) x = round_exact(X, W);
-    if (y != y) y = round_exact(Y, W);
+    if (!(x == x && y == y)) {
+      Dy X, Y, W;
+      exact(v, X, Y, W);
+      if (x != x) x = round_exact(X, W);
+      if (y != y) y = round_exact(Y, W);
+    }
+    return check && rounds_exactly(v, x, y);
   }
 };
 

@@ -13,6 +13,31 @@
 namespace mk {
 namespace ov {
 
+// Puts polylines (vertices xy, offsets off) in a canonical order: lexicographic by their
+// vertices (x, then y, first vertex first), shorter first on a common start. The order
+// is then independent of the arrangement's internal numbering.
+inline void sort_polylines(std::vector<double>& xy, std::vector<i64>& off) {
+  const std::size_t n = off.size() - 1;
+  if (n < 2) return;
+  std::vector<std::size_t> ord(n);
+  for (std::size_t k = 0; k < n; ++k) ord[k] = k;
+  std::sort(ord.begin(), ord.end(), [&](std::size_t a, std::size_t b) {
+    const double* p = xy.data();
+    return std::lexicographical_compare(p + 2 * off[a], p + 2 * off[a + 1], p + 2 * off[b],
+                                        p + 2 * off[b + 1]);
+  });
+  std::vector<double> sx;
+  std::vector<i64> so{0};
+  sx.reserve(xy.size());
+  so.reserve(off.size());
+  for (std::size_t k : ord) {
+    sx.insert(sx.end(), xy.begin() + 2 * off[k], xy.begin() + 2 * off[k + 1]);
+    so.push_back((i64)sx.size() / 2);
+  }
+  xy.swap(sx);
+  off.swap(so);
+}
+
 inline int Overlay::run_lines(const std::vector<EdgeIn>& in, int rule, bool keep_inside,
                               std::vector<double>& xy, std::vector<i64>& off) {
   xy.clear();
@@ -78,6 +103,7 @@ inline int Overlay::run_lines(const std::vector<EdgeIn>& in, int rule, bool keep
     }
   for (std::size_t k = 0; k < kept.size(); ++k)
     if (!used[k]) walk((i64)k, tail_of((i64)k));
+  sort_polylines(xy, off);
   return OK;
 }
 
@@ -194,6 +220,11 @@ inline void Overlay::degenerate(const std::vector<std::vector<EdgeIn>>& rings,
     line_off.push_back((i64)lines.size() / 2);
   }
   degenerate_points(rings, at_degen, at_boundary, points);
+  sort_polylines(lines, line_off);
+  // the points too (x, then y)
+  std::vector<i64> poff(points.size() / 2 + 1);
+  for (std::size_t k = 0; k < poff.size(); ++k) poff[k] = (i64)k;
+  sort_polylines(points, poff);
 }
 
 // The isolated points of degenerate(): vertices away from the boundary and from

@@ -311,8 +311,11 @@ inline void rerun_rounded(Rings& r) {
 // Cleans the rounded rings and checks them; re-nodes them (a few times at most) when
 // rounding made them invalid.
 inline void finish_rounded_impl(Rings& r, int depth) {
+  // exact vertices: no two neighbours rounded together, every ring already starts at its
+  // smallest vertex (assemble), and the rings are the exact result
+  if (r.exact_vertices) return;
   clean_rounded(r);
-  if (r.exact_vertices || valid_rounded(r)) return;
+  if (valid_rounded(r)) return;
   if (depth >= 4) {
     r.status = INTERNAL;
     return;

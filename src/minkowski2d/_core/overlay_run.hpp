@@ -36,7 +36,7 @@ class Overlay {
   void run(const std::vector<EdgeIn>& in, int rule, std::vector<BEdge>& out) {
     arrange(in, rule);
     out.clear();
-    for (const Piece& b : bnd_) out.push_back(BEdge{b.line, vg_[b.from], vg_[b.to]});
+    for (const BPiece& b : bnd_) out.push_back(BEdge{b.line, vg_[b.from], vg_[b.to]});
   }
   // The same, with some vertices already in sweep order: each list in `sorted` holds
   // global vertex ids in the order of boundary_vertices() (one id per point, no id in
@@ -60,15 +60,19 @@ class Overlay {
     if (bnd_.empty()) return;
     const i64 nv = (i64)av_.size();
     std::vector<char> used(nv, 0);
-    for (const Piece& b : bnd_) used[b.from] = used[b.to] = 1;
-    for (i64 t = 0; t < nv; ++t) {
-      i64 v = sw_by_rank_[t];
+    for (const BPiece& b : bnd_) used[b.from] = used[b.to] = 1;
+    for (i64 v = 0; v < nv; ++v)  // ids are sweep ranks
       if (used[v]) out.push_back(av_[v]);
-    }
   }
   // The selected region as rings with holes.
   void run(const std::vector<EdgeIn>& in, int rule, Rings& out) {
     run_raw(in, rule, out);
+    if (out.status == OK) finish_rounded(out);
+  }
+  // After a run with boundary edges out: the same region as rings (as run with rings out
+  // would have given)
+  void rings(Rings& out) {
+    trace(out);
     if (out.status == OK) finish_rounded(out);
   }
   // as run, without the check after rounding (the check's own re-run uses it)
@@ -123,28 +127,37 @@ class Overlay {
   // ---- local state of a run (reused)
   std::vector<EdgeIn> ed_;        // input edges, local vertex ids
   std::vector<i64> vg_;           // local vertex -> global vertex (representative)
-  std::vector<i64> rank_;         // local vertex -> sweep position
   struct Split {
     i64 edge, node;  // node: local vertex id, or nv0 + new crossing
-    double k = 0, ke = 0;  // split(): position along the edge, approximate, and its bound
   };
   std::vector<Split> splits_;
-  std::vector<i64> newv_;  // new crossing -> global vertex id
+  std::vector<i64> newv_;  // new crossing -> global vertex id (made after intersect())
+  std::vector<std::pair<i64, i64>> cross_;  // new crossing -> its two lines
   std::vector<i64> uf_;
+  // Vertex and edge ids of a run fit 32 bits (arrange() stops with RESOURCE beyond):
+  // the pieces are the run's largest arrays.
+  using i32 = std::int32_t;
   struct Piece {
-    i64 l, r;       // local vertices, rank l < rank r (boundary: from, to)
+    i32 l, r;    // arrangement vertices, l < r (sweep ranks)
+    i32 src;     // the input edge it comes from (its line's cached points: ll_)
+    i32 c0, c1;  // change of w0, w1 crossing upwards
+    i32 b0, b1;  // winding numbers below
+    i32 n0;      // layer-0 weight of the edges with their inside below (for
+                 // degenerate(): the rings covering the piece's own points)
+    i32 nl;      // layer-2 (line) edges along it: a piece of a clipped polyline
+    std::int8_t s;   // +1 when the line runs from l's side to r's side
+    std::int8_t ld;  // +1: the first such line edge runs l -> r, -1: r -> l
     i64 line;
-    int s;          // +1 when the line runs from l's side to r's side
-    int c0, c1;     // change of w0, w1 crossing upwards
-    int b0, b1;     // winding numbers below
-    i64 from, to;   // boundary direction (local ids)
-    int n0;         // layer-0 weight of the edges with their inside below (for
-                    // degenerate(): the rings covering the piece's own points)
-    i64 src = -1;   // the input edge it comes from (its line's cached points: ll_)
-    int nl = 0;     // layer-2 (line) edges along it: a piece of a clipped polyline
-    int ld = 0;     // +1: the first such line edge runs l -> r, -1: r -> l
   };
-  std::vector<Piece> pcs_, bnd_;
+  std::vector<Piece> pcs_;
+  // a boundary piece: from -> to with the inside on the left; d = +1 when its line runs
+  // from -> to
+  struct BPiece {
+    i64 line;
+    i32 from, to, src;
+    std::int8_t d;
+  };
+  std::vector<BPiece> bnd_;
   int rule_ = UNION;
   bool over_ = false;
   bool keep_zero_ = false;
@@ -172,8 +185,20 @@ class Overlay {
     rule_ = rule;
     n_pairs = n_crossings = n_vertices = n_edges = 0;
     over_ = false;
+    ordered_ = false;
     local_vertices(in);
     intersect();
+    // vertex and edge ids of 32 bits (the pieces' fields)
+    const i64 i32max = INT32_MAX;
+    if ((i64)vg_.size() + (i64)cross_.size() >= i32max || (i64)ed_.size() >= i32max) over_ = true;
+    if (!over_) {  // the crossings as vertices, in one growth of the geometry
+      const std::size_t need = g_.verts.size() + cross_.size();  // growing geometrically:
+      if (need > g_.verts.capacity())  // a workspace's geometry grows over many runs
+        g_.verts.reserve(std::max(need, 2 * g_.verts.capacity()));
+      newv_.resize(cross_.size());
+      for (std::size_t k = 0; k < cross_.size(); ++k)
+        newv_[k] = g_.vert_cross(cross_[k].first, cross_[k].second);
+    }
     if (over_) {
       splits_.clear();
       newv_.clear();
@@ -187,6 +212,16 @@ class Overlay {
     windings();
     boundary();
   }
+
+  // cached approximations of an input edge's line and of a vertex (side_ev)
+  struct LLine {
+    FE ax, ay, bx, by;  // the line's two points (exact when e == 0)
+    bool plain;
+  };
+  struct LVert {
+    FE x, y;  // exact when both bounds are 0: then plain doubles
+    bool plain() const { return x.e == 0 && y.e == 0; }
+  };
 
   // step 1: input vertices sorted and merged; edges in local ids
   std::vector<i64> tmp_;
@@ -219,6 +254,50 @@ class Overlay {
     if (s == UNSURE) s = g_.coord_cmp(a.g, b.g, 1);
     return s;
   }
+  // Sorts a (each key(a[i]) a VKey) into the sweep order: by the approximations as plain
+  // doubles (compact keys), then every adjacent pair compared with vkcmp (exact where the
+  // approximations cannot tell): the few inversions of near-equal keys are repaired by
+  // insertion, and a sequence with many goes to a full sort by vkcmp.
+  struct AKey {
+    double x, y;
+    std::uint32_t i;
+  };
+  std::vector<AKey> ak_;
+  template <class T, class K>
+  void sort_sweep(std::vector<T>& a, std::vector<T>& tmp, K key) {
+    const std::size_t n = a.size();
+    if (n < 2) return;
+    auto exact_less = [&](const T& u, const T& v) { return vkcmp(key(u), key(v)) < 0; };
+    if (n > 0xffffffffu) {
+      std::sort(a.begin(), a.end(), exact_less);
+      return;
+    }
+    ak_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const VKey& k = key(a[i]);
+      ak_[i] = AKey{k.x, k.y, (std::uint32_t)i};
+    }
+    std::sort(ak_.begin(), ak_.end(), [](const AKey& u, const AKey& v) {
+      return u.x < v.x || (u.x == v.x && u.y < v.y);
+    });
+    tmp.resize(n);
+    for (std::size_t t = 0; t < n; ++t) tmp[t] = a[ak_[t].i];
+    a.swap(tmp);
+    std::size_t moves = 0;
+    for (std::size_t t = 1; t < n; ++t) {
+      if (!exact_less(a[t], a[t - 1])) continue;
+      T x = a[t];
+      std::size_t q = t;
+      for (; q > 0 && exact_less(x, a[q - 1]); --q) a[q] = a[q - 1];
+      a[q] = x;
+      moves += t - q;
+      if (moves > n) {  // far from sorted: sort it all exactly
+        std::sort(a.begin(), a.end(), exact_less);
+        return;
+      }
+    }
+  }
+
   // certainly the same point without arithmetic: the same id, or crossings of the same
   // two lines (false: not known)
   bool same_vertex(i64 a, i64 b) const {
@@ -241,11 +320,12 @@ class Overlay {
   std::uint32_t run_stamp_ = 0;
 
   std::vector<VKey> vk2_, vk3_;
-  // merges the sorted sequence b into a (sorted): the result in a
-  void merge_keys(std::vector<VKey>& a, const std::vector<VKey>& b) {
+  // merges the sorted sequence b into a (sorted): the result in a (b's buffer may be
+  // taken)
+  void merge_keys(std::vector<VKey>& a, std::vector<VKey>& b) {
     if (b.empty()) return;
     if (a.empty()) {
-      a = b;
+      a.swap(b);
       return;
     }
     vk3_.resize(a.size() + b.size());
@@ -274,14 +354,14 @@ class Overlay {
       }
     // the others, sorted
     vk2_.clear();
+    vk2_.reserve(2 * in.size());
     for (const EdgeIn& e : in)
       for (i64 v : {e.v0, e.v1})
         if (g2l_[v].stamp != run_stamp_) {
           g2l_[v].stamp = run_stamp_;
           vk2_.push_back(vkey(v));
         }
-    std::sort(vk2_.begin(), vk2_.end(),
-              [&](const VKey& a, const VKey& b) { return vkcmp(a, b) < 0; });
+    sort_sweep(vk2_, vk3_, [](const VKey& k) -> const VKey& { return k; });
     merge_keys(vk_, vk2_);
     vg_.clear();
     for (std::size_t t = 0; t < vk_.size(); ++t) {
@@ -289,6 +369,7 @@ class Overlay {
       g2l_[vk_[t].g].local = (i64)vg_.size() - 1;
     }
     ed_.clear();
+    ed_.reserve(in.size());
     ngroups_ = 0;
     for (const EdgeIn& e : in) {
       i64 a = g2l_[e.v0].local, b = g2l_[e.v1].local;
@@ -320,6 +401,7 @@ class Overlay {
     const i64 n = (i64)ed_.size();
     splits_.clear();
     newv_.clear();
+    cross_.clear();
     bx0_.resize(n);
     bx1_.resize(n);
     by0_.resize(n);
@@ -421,8 +503,8 @@ class Overlay {
       over_ = true;
       return;
     }
-    i64 node = (i64)vg_.size() + (i64)newv_.size();
-    newv_.push_back(g_.vert_cross(s.line, t.line));
+    i64 node = (i64)vg_.size() + (i64)cross_.size();
+    cross_.emplace_back(s.line, t.line);
     splits_.push_back(Split{i, node});
     splits_.push_back(Split{j, node});
   }
@@ -432,195 +514,222 @@ class Overlay {
     return node < nv0 ? vg_[node] : newv_[node - nv0];
   }
 
-  // step 3: splits sorted along their edges, equal ones united
+  // step 3: splits sorted along their edges, equal ones united. The splits of edge i are
+  // sk_[sstart_[i] .. sstart_[i + 1]), from v0 to v1.
+  struct SKey {
+    double k, ke;  // position along the edge (growing from v0 to v1), approximate, bound
+    i64 node;
+  };
+  std::vector<SKey> sk_;
+  std::vector<i64> sstart_, sfill_;
   std::vector<std::int8_t> edir_;
   void split() {
-    const i64 nv0 = (i64)vg_.size();
+    const i64 nv0 = (i64)vg_.size(), ne = (i64)ed_.size();
     uf_.resize(nv0 + newv_.size());
     std::iota(uf_.begin(), uf_.end(), 0);
-    // each split edge's direction against its line (+1: v0 -> v1 runs along it)
-    edir_.resize(ed_.size());
-    for (std::size_t k = 0; k < splits_.size(); ++k)
-      if (k == 0 || splits_[k].edge != splits_[k - 1].edge) {
-        const EdgeIn& e = ed_[splits_[k].edge];
-        edir_[splits_[k].edge] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
-      }
-    // the position along the edge: its line's axis coordinate (as along() compares),
-    // times the sign that makes it grow from v0 to v1; certified apart -> no exact test
-    for (Split& sp : splits_) {
-      const EdgeIn& e = ed_[sp.edge];
+    // counting sort by edge
+    sstart_.assign(ne + 1, 0);
+    for (const Split& sp : splits_) ++sstart_[sp.edge + 1];
+    for (i64 i = 0; i < ne; ++i) sstart_[i + 1] += sstart_[i];
+    sfill_.assign(sstart_.begin(), sstart_.end() - 1);
+    sk_.resize(splits_.size());
+    for (const Split& sp : splits_) sk_[sfill_[sp.edge]++].node = sp.node;
+    edir_.resize(ne);
+    for (i64 i = 0; i < ne; ++i) {
+      const EdgeIn& e = ed_[i];
+      // the edge's direction against its line (+1: v0 -> v1 runs along it; pieces())
+      edir_[i] = (std::int8_t)g_.along(e.line, vg_[e.v1], vg_[e.v0]);
+      const i64 a = sstart_[i], b = sstart_[i + 1];
+      if (a == b) continue;
+      // the position along the edge: its line's axis coordinate (as along() compares),
+      // times the sign that makes it grow from v0 to v1; certified apart -> no exact test
       const P &p = g_.pts[g_.lines[e.line].a], &q = g_.pts[g_.lines[e.line].b];
       const bool ya = dd_eq(p.x, q.x);
-      const int sg = (ya ? dd_cmp(q.y, p.y) : dd_cmp(q.x, p.x)) * edir_[sp.edge];
-      const Vert& V = g_.verts[gid(sp.node)];
-      const FE c = ya ? V.y : V.x;
-      sp.k = sg > 0 ? c.v : -c.v;
-      sp.ke = c.e;
-    }
-    std::sort(splits_.begin(), splits_.end(), [&](const Split& a, const Split& b) {
-      if (a.edge != b.edge) return a.edge < b.edge;
-      if (a.node == b.node) return false;
-      const double gap = (a.ke + b.ke) * (1 + 0x1p-50);
-      if (b.k - a.k > gap) return true;
-      if (a.k - b.k > gap) return false;
-      const EdgeIn& e = ed_[a.edge];
-      // along the edge's own direction (v0 -> v1)
-      int s = along_s(e.line, gid(a.node), gid(b.node));
-      return s * edir_[a.edge] < 0;
-    });
-    for (std::size_t k = 1; k < splits_.size(); ++k) {
-      const Split &a = splits_[k - 1], &b = splits_[k];
-      if (a.edge == b.edge && a.node != b.node &&
-          along_s(ed_[a.edge].line, gid(a.node), gid(b.node)) == 0)
-        unite(a.node, b.node);
+      const int sg = (ya ? dd_cmp(q.y, p.y) : dd_cmp(q.x, p.x)) * edir_[i];
+      for (i64 t = a; t < b; ++t) {
+        const Vert& V = g_.verts[gid(sk_[t].node)];
+        const FE c = ya ? V.y : V.x;
+        sk_[t].k = sg > 0 ? c.v : -c.v;
+        sk_[t].ke = c.e;
+      }
+      const int dir = edir_[i];
+      auto less = [&](const SKey& x, const SKey& y) {
+        if (x.node == y.node) return false;
+        const double gap = (x.ke + y.ke) * (1 + 0x1p-50);
+        if (y.k - x.k > gap) return true;
+        if (x.k - y.k > gap) return false;
+        // along the edge's own direction (v0 -> v1)
+        return along_s(e.line, gid(x.node), gid(y.node)) * dir < 0;
+      };
+      if (b - a > 1) std::sort(sk_.begin() + a, sk_.begin() + b, less);
+      for (i64 t = a + 1; t < b; ++t) {
+        const SKey &x = sk_[t - 1], &y = sk_[t];
+        if (x.node == y.node || y.k - x.k > (x.ke + y.ke) * (1 + 0x1p-50)) continue;
+        if (along_s(e.line, gid(x.node), gid(y.node)) == 0) unite(x.node, y.node);
+      }
     }
     // representatives: roots; a new vertex united with an input one maps to it
   }
 
-  // step 4 prelude: local vertices of the arrangement in sweep order
-  std::vector<i64> lid_;  // node -> arrangement vertex (local), after union
+  // step 4 prelude: the arrangement's vertices, numbered in sweep order (an arrangement
+  // vertex's id is its rank: pieces sorted by their left vertex are in sweep order)
+  std::vector<i64> lid_;  // node -> arrangement vertex, after union
   std::vector<i64> av_;   // arrangement vertex -> global vertex id
+  struct NKey {
+    VKey k;
+    i64 node;
+  };
+  std::vector<NKey> nk_, nk2_;
+  std::vector<LVert> lv2_;
+  bool ordered_ = false;  // order() has run: local vertex ids are arrangement ids
   void order() {
     const i64 nn = (i64)uf_.size(), nv0 = (i64)vg_.size();
-    lid_.assign(nn, -1);
-    av_.clear();
-    for (i64 node = 0; node < nn; ++node) {
-      i64 r = find(node);
-      if (lid_[r] < 0) {
-        lid_[r] = (i64)av_.size();
-        av_.push_back(gid(r));
-      }
-      lid_[node] = lid_[r];
-    }
-    const i64 m = (i64)av_.size();
+    // the new roots (crossings not united with an input vertex), sorted; the input
+    // vertices are roots already in sweep order (local_vertices): merged with them
+    nk_.clear();
+    for (i64 node = nv0; node < nn; ++node)
+      if (find(node) == node) nk_.push_back(NKey{vkey(gid(node)), node});
+    sort_sweep(nk_, nk2_, [](const NKey& k) -> const VKey& { return k.k; });
+    const i64 nnew = (i64)nk_.size(), m = nv0 + nnew;
     n_vertices = m;
-    lv_.resize(m);
-    for (i64 t = nv0; t < m; ++t) lv_[t] = lvert(av_[t]);
-    // the input vertices are roots, in sweep order (local_vertices); sort the new ones
-    // and merge
-    vk_.clear();
-    for (i64 t = nv0; t < m; ++t) vk_.push_back(vkey(av_[t]));
-    std::vector<i64>& tail = tmp_;
-    tail.resize(m - nv0);
-    std::iota(tail.begin(), tail.end(), nv0);
-    std::sort(tail.begin(), tail.end(),
-              [&](i64 a, i64 b) { return vkcmp(vk_[a - nv0], vk_[b - nv0]) < 0; });
-    rank_.resize(m);
+    lid_.resize(nn);
+    av_.resize(m);
+    lv2_.resize(m);
     i64 i = 0, j = 0, t = 0;
-    VKey hk{};
-    bool have = false;
-    while (i < nv0 || j < m - nv0) {
-      if (i < nv0 && !have) {
-        hk = vkey(av_[i]);
-        have = true;
-      }
-      bool take_head =
-          j >= m - nv0 || (i < nv0 && vkcmp(hk, vk_[tail[j] - nv0]) < 0);
-      if (take_head) {
-        rank_[i++] = t++;
-        have = false;
+    while (i < nv0 || j < nnew) {
+      bool take_input = j >= nnew || (i < nv0 && vkcmp(vkey(vg_[i]), nk_[j].k) < 0);
+      if (take_input) {
+        lid_[i] = t;
+        av_[t] = vg_[i];
+        lv2_[t] = lv_[i];
+        ++i;
       } else {
-        rank_[tail[j++]] = t++;
+        const i64 node = nk_[j].node;
+        lid_[node] = t;
+        av_[t] = nk_[j].k.g;
+        lv2_[t] = lvert(av_[t]);
+        ++j;
       }
+      ++t;
+    }
+    lv_.swap(lv2_);
+    ordered_ = true;
+    for (i64 node = nv0; node < nn; ++node) {
+      const i64 r = find(node);
+      if (r != node) lid_[node] = lid_[r];
     }
   }
 
-  // step 4: pieces
-  std::vector<Piece> raw_;
-  std::vector<std::pair<u64, std::uint32_t>> pkey_;
+  // step 4: pieces, grouped by their left vertex (ascending, so in sweep order), each
+  // group in slope order (bottom to top: the order the sweep inserts them in);
+  // pieces joining the same two vertices merged (weights added). pstart_[v] is the
+  // first piece of vertex v.
+  struct RawP {
+    i32 r, src;
+    std::int8_t s;  // the line's direction (l -> r: +1)
+    bool fwd;       // the edge runs l -> r
+  };
+  std::vector<RawP> raw_;
+  std::vector<i64> pstart_, pfill_;
+  // calls f(l, r, s, c) for every piece of input edge i (between consecutive splits)
+  template <class F>
+  void edge_pieces(i64 i, F&& f) const {
+    const EdgeIn& e = ed_[i];
+    // the line's own direction against the edge's
+    const int es = edir_[i];
+    i64 prev = lid_[e.v0];
+    auto emit = [&](i64 nxt) {
+      if (nxt == prev) return;
+      const bool fwd = prev < nxt;
+      // the line runs from l's side to r's side when the edge does (fwd) and the line
+      // runs along the edge (es > 0), or neither
+      f(fwd ? prev : nxt, fwd ? nxt : prev, (fwd == (es > 0)) ? 1 : -1, fwd);
+      prev = nxt;
+    };
+    for (i64 t = sstart_[i]; t < sstart_[i + 1]; ++t) emit(lid_[sk_[t].node]);
+    emit(lid_[e.v1]);
+  }
   void pieces() {
-    std::vector<Piece>& raw = raw_;
-    raw.clear();
-    raw.reserve(ed_.size() + splits_.size());  // the most there can be
-    std::size_t k = 0;
-    for (i64 i = 0; i < (i64)ed_.size(); ++i) {
-      const EdgeIn& e = ed_[i];
-      // the line's own direction against the edge's
-      int es = g_.along(e.line, vg_[e.v1], vg_[e.v0]);
-      i64 prev = lid_[e.v0];
-      auto emit = [&](i64 nxt) {
-        if (nxt == prev) return;
-        Piece pc;
-        bool fwd = rank_[prev] < rank_[nxt];
-        pc.l = fwd ? prev : nxt;
-        pc.r = fwd ? nxt : prev;
-        pc.line = e.line;
-        pc.src = i;
-        // the line runs from l's side to r's side when the edge does (fwd) and the line
-        // runs along the edge (es > 0), or neither
-        pc.s = (fwd == (es > 0)) ? 1 : -1;
-        int c = fwd ? e.w : -e.w;
-        pc.c0 = e.layer == 0 ? c : 0;
-        pc.c1 = e.layer == 1 ? c : 0;
-        pc.nl = e.layer == 2 ? 1 : 0;
-        pc.ld = e.layer == 2 ? (fwd ? 1 : -1) : 0;
-        pc.b0 = pc.b1 = 0;
-        raw.push_back(pc);
-        prev = nxt;
-      };
-      while (k < splits_.size() && splits_[k].edge == i) {
-        emit(lid_[splits_[k].node]);
-        ++k;
-      }
-      emit(lid_[e.v1]);
-    }
-    // sorted by (l, r) through small keys; pieces joining the same two vertices merged
-    pkey_.resize(raw.size());
-    for (std::size_t i = 0; i < raw.size(); ++i)
-      pkey_[i] = {((u64)raw[i].l << 32) | (u64)raw[i].r, (std::uint32_t)i};
-    std::sort(pkey_.begin(), pkey_.end());
+    const i64 m = (i64)av_.size(), ne = (i64)ed_.size();
+    // counting sort by the left vertex: count, then place
+    pstart_.assign(m + 1, 0);
+    for (i64 i = 0; i < ne; ++i)
+      edge_pieces(i, [&](i64 l, i64, int, bool) { ++pstart_[l + 1]; });
+    for (i64 v = 0; v < m; ++v) pstart_[v + 1] += pstart_[v];
+    raw_.resize(pstart_[m]);
+    pfill_.assign(pstart_.begin(), pstart_.end() - 1);
+    for (i64 i = 0; i < ne; ++i)
+      edge_pieces(i, [&](i64 l, i64 r, int s, bool fwd) {
+        raw_[pfill_[l]++] = RawP{(i32)r, (i32)i, (std::int8_t)s, fwd};
+      });
+    // each group: sorted by r (then by input edge, as placed), equal ones merged, then
+    // in slope order
     pcs_.clear();
-    pcs_.reserve(raw.size());
-    for (std::size_t i = 0; i < pkey_.size();) {
-      std::size_t j = i;
-      Piece pc = raw[pkey_[i].second];
-      pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.ld = 0;
-      for (; j < pkey_.size() && pkey_[j].first == pkey_[i].first; ++j) {
-        const Piece& q = raw[pkey_[j].second];
-        pc.c0 += q.c0;
-        pc.c1 += q.c1;
-        if (q.c0 < 0) pc.n0 -= q.c0;
-        if (q.nl && !pc.nl) pc.ld = q.ld;
-        pc.nl += q.nl;
+    pcs_.reserve(raw_.size());
+    for (i64 v = 0; v < m; ++v) {
+      const i64 a = pstart_[v], b = pstart_[v + 1];
+      pstart_[v] = (i64)pcs_.size();
+      if (b - a > 1)
+        std::sort(raw_.begin() + a, raw_.begin() + b, [](const RawP& x, const RawP& y) {
+          return x.r < y.r || (x.r == y.r && x.src < y.src);
+        });
+      for (i64 q = a; q < b;) {
+        Piece pc;
+        pc.l = (i32)v;
+        pc.r = raw_[q].r;
+        pc.src = raw_[q].src;
+        pc.line = ed_[pc.src].line;
+        pc.s = raw_[q].s;
+        pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.b0 = pc.b1 = 0;
+        pc.ld = 0;
+        i64 q1 = q;
+        for (; q1 < b && raw_[q1].r == pc.r; ++q1) {
+          const RawP& x = raw_[q1];
+          const EdgeIn& e = ed_[x.src];
+          const int c = x.fwd ? e.w : -e.w;  // the weight crossing upwards
+          if (e.layer == 0) pc.c0 += c;
+          if (e.layer == 1) pc.c1 += c;
+          if (e.layer == 0 && c < 0) pc.n0 -= c;
+          if (e.layer == 2) {
+            if (!pc.nl) pc.ld = x.fwd ? 1 : -1;  // the first line edge's direction
+            ++pc.nl;
+          }
+        }
+        // keep_zero_: a piece where rings meet from both sides stays (degenerate())
+        if (pc.c0 != 0 || pc.c1 != 0 || pc.nl != 0 || (keep_zero_ && q1 > q + 1))
+          pcs_.push_back(pc);
+        q = q1;
       }
-      // keep_zero_: a piece where rings meet from both sides stays (degenerate())
-      if (pc.c0 != 0 || pc.c1 != 0 || pc.nl != 0 || (keep_zero_ && j > i + 1))
-        pcs_.push_back(pc);
-      i = j;
+      const i64 p0 = pstart_[v], p1 = (i64)pcs_.size();
+      if (p1 - p0 > 1)
+        std::sort(pcs_.begin() + p0, pcs_.begin() + p1,
+                  [&](const Piece& x, const Piece& y) { return slope_below(x, y); });
     }
+    pstart_[m] = (i64)pcs_.size();
     n_edges = (i64)pcs_.size();
   }
-
   // side of arrangement vertex v against the line of piece e (oriented l -> r)
   int side(const Piece& e, i64 v) const {
     return (e.src >= 0 ? side_ev(e.src, v) : g_.side(e.line, av_[v])) * e.s;
   }
-  // Side of local vertex v (an input vertex, or an arrangement vertex once order() has
-  // run: input vertices keep their ids) against the line of input edge i: from the
+  // Side of local vertex v (an input vertex before order() has run, an arrangement
+  // vertex after) against the line of input edge i: from the
   // cached plain coordinates when both are plain (one orientation of doubles), else
   // Geo::side.
-  struct LLine {
-    FE ax, ay, bx, by;  // the line's two points (exact when e == 0)
-    bool plain;
-  };
-  struct LVert {
-    FE x, y;  // exact when plain (a point of two doubles)
-    bool plain;
-  };
   std::vector<LLine> ll_;
   std::vector<LVert> lv_;
   int side_ev(i64 i, i64 v) const {
     const LLine& L = ll_[i];
     const LVert& V = lv_[v];
-    if (L.plain && V.plain)
+    if (L.plain && V.plain())
       return mk::orient(L.ax.v, L.ay.v, L.bx.v, L.by.v, V.x.v, V.y.v);
     int s = fe_sign(cross(L.bx - L.ax, L.by - L.ay, V.x - L.ax, V.y - L.ay));
     if (s != UNSURE) return s;
-    return g_.side(ed_[i].line, v < (i64)vg_.size() ? vg_[v] : av_[v]);
+    return g_.side(ed_[i].line, ordered_ ? av_[v] : vg_[v]);
   }
   LVert lvert(i64 gv) const {
     const Vert& V = g_.verts[gv];
-    return LVert{V.x, V.y, V.p >= 0 && V.x.e == 0 && V.y.e == 0};
+    return LVert{V.x, V.y};
   }
   // pieces from one vertex: e1 below e2 when the turn from e1 to e2 is left
   bool slope_below(const Piece& e1, const Piece& e2) const {
@@ -666,15 +775,19 @@ class Overlay {
   };
   SweepStatus sw_st_;
 
-  // Sweeps the pieces ps (which do not cross); after inserting the pieces that start at
-  // a vertex calls at_vertex(new pieces bottom to top, predecessor of the lowest or -1).
-  // The status is sorted bottom to top: at vertex v the pieces below v are a prefix (v is
-  // strictly left of each, looking along it), then come the pieces that end at v (no
-  // piece passes through a vertex: the pieces are noded); those are replaced by the
-  // pieces that start at v, in slope order.
-  std::vector<i64> sw_by_rank_, sw_lo_l_, sw_lo_r_, sw_at_l_, sw_at_r_, sw_fill_, sw_fresh_;
+  // Sweeps the pieces ps (which do not cross), grouped by their left vertex: the pieces
+  // of vertex v are ps[start[v] .. start[v + 1]), in slope order (bottom to top). After
+  // inserting the pieces that start at a vertex calls at_vertex(first, end, predecessor
+  // of the first or -1). The status is sorted bottom to top: at vertex v the pieces below
+  // v are a prefix (v is strictly left of each, looking along it), then come the pieces
+  // that end at v (no piece passes through a vertex: the pieces are noded); those are
+  // replaced by the pieces that start at v.
+  std::vector<i64> sw_nend_;
   template <class F>
-  void sweep(const std::vector<Piece>& ps, F&& at_vertex);
+  void sweep(const std::vector<Piece>& ps, const std::vector<i64>& start, F&& at_vertex);
+  // ps (with a value per piece in `val`) grouped by left vertex and in slope order, as
+  // sweep() takes them; start as sweep() reads it
+  void group_pieces(std::vector<Piece>& ps, std::vector<i64>& val, std::vector<i64>& start);
 
   // step 5
   void windings();
@@ -683,12 +796,8 @@ class Overlay {
   void boundary();
 
   // direction of boundary piece b (from -> to) as points of its line
-  void bdir(const Piece& b, const P*& p, const P*& q) const {
-    // the line runs l -> r when s > 0; from -> to is l -> r when from == l
-    int s = b.from == b.l ? b.s : -b.s;
-    g_.dir(b.line, s, p, q);
-  }
-  int bturn(const Piece& a, const Piece& b) const {
+  void bdir(const BPiece& b, const P*& p, const P*& q) const { g_.dir(b.line, b.d, p, q); }
+  int bturn(const BPiece& a, const BPiece& b) const {
     const P *p1, *q1, *p2, *q2;
     bdir(a, p1, q1);
     bdir(b, p2, q2);
@@ -696,18 +805,23 @@ class Overlay {
   }
 
   // ---- rings
-  std::vector<std::vector<i64>> rings_;       // arrangement vertices, inside on the left
-  std::vector<std::vector<i64>> ring_edges_;  // boundary pieces of each ring
-  std::vector<std::vector<i64>> ring_lines_;  // line of the edge leaving each kept vertex
+  // ring k: its kept arrangement vertices rv_[roff_[k] .. roff_[k + 1]) (inside on the
+  // left) with the line of the edge leaving each (rl_), its boundary pieces
+  // re_[reoff_[k] .. reoff_[k + 1]), its orientation
+  std::vector<i64> rv_, rl_, roff_, re_, reoff_;
   std::vector<char> ring_ccw_;
+  // scratch of trace() and assemble()
+  std::vector<i64> tr_lo_, tr_outs_, tr_pos_, tr_walk_v_, tr_walk_e_;
+  std::vector<char> tr_used_;
+  std::vector<double> tr_xy_;
   std::vector<char> junction_;  // arrangement vertex where several boundary rings meet
 
   void trace(Rings& out);
 
   // a simple loop: drop collinear vertices, record its orientation
-  void add_ring(const std::vector<i64>& rv, const std::vector<i64>& re);
+  void add_ring(const i64* rv, const i64* re, i64 n);
 
-  // each hole's exterior (index into rings_), -1 for exteriors
+  // each hole's exterior (a ring's index), -1 for exteriors
   std::vector<i64> owner_;
   void holes();
 

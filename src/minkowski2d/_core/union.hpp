@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <memory>
 #include <numeric>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -147,7 +148,8 @@ class ConvexUnion {
     uverts_.clear();
     pending_.clear();
     i64 pend_edges = 0;
-    for (i64 k : order) {
+    for (std::size_t q = 0; q < order.size(); ++q) {
+      const i64 k = order[q];
       src.get(k, v);
       const bool cvx = src.convex(k);
       if (cull && cvx && idx_.covers(v.data(), (i64)v.size())) {
@@ -162,7 +164,9 @@ class ConvexUnion {
       if (!cvx)  // its edges may cross each other: no group
         for (EdgeIn& e : pending_.back()) e.group = -2;
       pend_edges += (i64)pending_.back().size();
-      if (pend_edges >= std::max(min_batch, (i64)(round_factor * (double)ubnd_.size()))) {
+      // (after the last piece, the last round below gives the rings: no index)
+      if (q + 1 < order.size() &&
+          pend_edges >= std::max(min_batch, (i64)(round_factor * (double)ubnd_.size()))) {
         if (!round()) return finish_limit(out);
         pend_edges = 0;
       }
@@ -218,6 +222,13 @@ class ConvexUnion {
   // with dU, more by a cascade first
   template <class Out>
   bool absorb(Out& out) {
+    if constexpr (std::is_same_v<Out, Rings>) {
+      if (pending_.empty() && !ubnd_.empty()) {
+        // nothing new since the last round: the rings of its run, which gave dU
+        o_.rings(out);
+        return true;
+      }
+    }
     std::vector<EdgeIn> in;
     bool ok;
     if ((i64)pending_.size() <= leaf) {

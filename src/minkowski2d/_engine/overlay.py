@@ -67,6 +67,11 @@ def closed_geometries(
     if len(xy) == 0:
         out[:] = [shapely.Polygon() for _ in range(K)]
         return out
+    if K == 1:  # one group (a single call): its Polygon or MultiPolygon directly
+        P = len(po) - 1
+        kind = shapely.GeometryType.POLYGON if P == 1 else shapely.GeometryType.MULTIPOLYGON
+        out[0] = shapely.from_ragged_array(kind, xy, (ro, po) if P == 1 else (ro, po, group_off))[0]
+        return out
     multi = shapely.from_ragged_array(shapely.GeometryType.MULTIPOLYGON, xy, (ro, po, group_off))
     parts = shapely.get_num_geometries(multi)
     one = parts == 1

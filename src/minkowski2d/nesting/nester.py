@@ -190,6 +190,21 @@ class _Sol:
         self.used = int(used)
 
     @classmethod
+    def empty(cls, pb: Problem, n_engine: int, obstacle_ids: list, unplaced: int) -> _Sol:
+        """Every part on bin ``unplaced`` at the origin, the obstacles on their bins."""
+        sol = cls(
+            [unplaced] * n_engine,
+            [0] * n_engine,
+            [0.0] * n_engine,
+            [0.0] * n_engine,
+            [b.width for b in pb.bins],
+            1,
+        )
+        for z, (b, ot) in enumerate(pb.obstacle_items):
+            sol.bin[obstacle_ids[z]], sol.ot[obstacle_ids[z]] = b, ot
+        return sol
+
+    @classmethod
     def of(cls, eng: Any) -> _Sol:
         return cls(*eng.state())
 
@@ -335,16 +350,7 @@ def _construct(
     where it fits, at the free position (exact test on the NFPs) that ends furthest
     left, among samples and the vertices of its NFPs with the parts already placed."""
     n = len(pb.items)
-    sol = _Sol(
-        [-1] * n_engine,
-        [0] * n_engine,
-        [0.0] * n_engine,
-        [0.0] * n_engine,
-        [b.width for b in pb.bins],
-        1,
-    )
-    for z, (b, ot) in enumerate(pb.obstacle_items):
-        sol.bin[obstacle_ids[z]], sol.ot[obstacle_ids[z]] = b, ot
+    sol = _Sol.empty(pb, n_engine, obstacle_ids, unplaced=-1)
     for it, (b, ot, x, y) in pb.fixed_items.items():
         sol.bin[it], sol.ot[it], sol.x[it], sol.y[it] = b, ot, x, y
         sol.used = max(sol.used, b + 1)
@@ -668,16 +674,7 @@ def _nonneg(v: Any, name: str) -> float:
 def _warm(pb: Problem, initial: Any, n_engine: int, obstacle_ids: list) -> _Sol | None:
     """The search state of a warm start (placements matched by part and copy)."""
     places = getattr(initial, "placements", initial)
-    sol = _Sol(
-        [0] * n_engine,
-        [0] * n_engine,
-        [0.0] * n_engine,
-        [0.0] * n_engine,
-        [b.width for b in pb.bins],
-        1,
-    )
-    for z, (b, ot) in enumerate(pb.obstacle_items):
-        sol.bin[obstacle_ids[z]], sol.ot[obstacle_ids[z]] = b, ot
+    sol = _Sol.empty(pb, n_engine, obstacle_ids, unplaced=0)
     index = {key: it for it, key in enumerate(pb.items)}
     seen = set()
     for k, p in enumerate(places):

@@ -459,7 +459,8 @@ def degenerate_placements(a: Any, b: Any, *, nfp: Any = None) -> Any:
     -------
     shapely geometry
         A (Multi)LineString, (Multi)Point or GeometryCollection of them; empty when
-        there is no such placement.
+        there is no such placement. Lines and points come in lexicographic order of
+        their vertices.
 
     Notes
     -----
