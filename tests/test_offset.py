@@ -357,6 +357,14 @@ def test_offset_many_per_member_distances():
             assert (g is None and out[k] is None) or out[k].equals_exact(
                 mk.offset(g, d, tolerance=t), 0
             )
+    # one compiled call whose results are empty, one polygon and two (a multipolygon)
+    polys = [shapely.Polygon(SQUARE), shapely.Polygon(DUMBBELL), shapely.Polygon(L_SHAPE)]
+    dv = [-2.5, -0.6, 0.2]
+    res = mk.offset_many(polys, dv, tolerance=1e-3)
+    assert [o.geom_type for o in res] == ["Polygon", "MultiPolygon", "Polygon"]
+    assert res[0].is_empty
+    for g, d, o in zip(polys, dv, res):
+        assert o.equals_exact(mk.offset(g, d, tolerance=1e-3), 0)
     gpd = pytest.importorskip("geopandas")
     s = gpd.GeoSeries([shapely.Polygon(SQUARE), None, shapely.Polygon(), shapely.Polygon(TRI)])
     out = mk.offset_many(s, np.array([0.5, 1.0, 2.0, -0.25]), threads=2)

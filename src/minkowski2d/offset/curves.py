@@ -281,12 +281,13 @@ def _shapes(res: tuple, distance: Any, tolerance: Any) -> np.ndarray:
     polys = shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
     if len(go) == 2 and len(po) == 2:  # one polygon of one ring or more
         return polys
-    out = np.empty(len(go) - 1, dtype=object)
     counts = np.diff(go)
     one = counts == 1
+    if one.all():  # one polygon per set
+        return polys
+    out = np.empty(len(go) - 1, dtype=object)
     out[one] = polys[go[:-1][one]]
-    if not one.all():
-        out[counts == 0] = shapely.Polygon()
+    out[counts == 0] = shapely.Polygon()
     many = np.flatnonzero(counts > 1)
     if len(many):
         members = np.concatenate([polys[go[g] : go[g + 1]] for g in many])
@@ -386,11 +387,13 @@ def _all_polygons(polygon: Any) -> np.ndarray | None:
     return arr
 
 
-def _map(polygon: Any, fn_args: tuple, threads: int = 1) -> Any:
-    """Offset each polygon of a container (same kind out)."""
+def _map(polygon: Any, fn_args: tuple, threads: int = 1, arr: Any = False) -> Any:
+    """Offset each polygon of a container (same kind out; ``arr``: its _all_polygons, when
+    known)."""
     from .._engine.containers import apply, boxed
 
-    arr = _all_polygons(polygon)
+    if arr is False:
+        arr = _all_polygons(polygon)
     if arr is not None:  # shapely polygons only: the shortest way, one compiled call
         d, tol, approx, join, lim, distance, tolerance = fn_args
         per = np.ndim(d) or np.ndim(tol)
@@ -629,7 +632,8 @@ def offset_many(
     _, _, lim = _check_options(1.0, None if np.ndim(ts) else ts, approx, join, miter_limit)
     from .._engine.containers import boxed, unbox
 
-    box = unbox(polygons) if _all_polygons(polygons) is None and boxed(polygons) else None
+    arr = _all_polygons(polygons)
+    box = unbox(polygons) if arr is None and boxed(polygons) else None
     if box is not None:  # the members apply() computes: not None, not empty
         import shapely
 
@@ -637,7 +641,7 @@ def offset_many(
         valid = ~np.equal(geoms, None) & ~shapely.is_empty(geoms)  # type: ignore[call-overload]
         ds = ds[valid]
         ts = ts[valid] if np.ndim(ts) else ts
-    return _map(polygons, (ds, ts, approx, join, lim, ds, ts), threads)
+    return _map(polygons, (ds, ts, approx, join, lim, ds, ts), threads, arr)
 
 
 def _member_values(value: Any, n: int, name: str) -> np.ndarray:
