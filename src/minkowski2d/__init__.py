@@ -61,7 +61,7 @@ from .nesting import (
     rotate_part,
     verify_layout,
 )
-from .offset import OffsetArcs, offset, offset_arcs
+from .offset import OffsetArcs, offset, offset_arcs, offset_many
 from .planning import MotionPlanner, Path
 from .trace import MergeTrace, merge_trace
 
@@ -129,6 +129,7 @@ __all__ = [
     "penetration_many",
     "offset",
     "offset_arcs",
+    "offset_many",
     "OffsetArcs",
     "Distance",
     "Penetration",

@@ -1,10 +1,13 @@
-// offset.cpp -- the binding of offset.hpp into minkowski2d._core._ext: offset_rings, one
-// call for one polygonal set or a batch of them (threads over the batch, GIL released).
+// offset.cpp -- the binding of offset.hpp into minkowski2d._core._ext: offset_rings (rings
+// read and checked by the caller) and offset_polygons (shapely's polygons, checked here),
+// one call for one polygonal set or a batch of them (threads over the batch, GIL
+// released).
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
 #include <nanobind/stl/tuple.h>
 
 #include <algorithm>
+#include <memory>
 #include <cstdint>
 #include <vector>
 
@@ -12,6 +15,7 @@
 #include "exact.hpp"
 #include "offset.hpp"
 #include "parallel.hpp"
+#include "polygon.hpp"
 
 namespace nb = nanobind;
 using namespace nb::literals;
@@ -20,33 +24,40 @@ using mk::i64;
 namespace mk_bind {
 namespace {
 
-// offset_rings(xy (N, 2), ring_off (R + 1,), ring_hole (R,), geom_off (G + 1,), unite (G,),
-//              delta (G,), distance, tolerance (NaN: default), default_rel, outer, join,
-//              miter_limit, labels=False, threads=1)
-//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), info (G, 4):
-//       status, code, least tolerance, tolerance used; extra)
-// Geometry g is made of the rings ring_off[geom_off[g]] ..; its result is the polygons
-// poly_off[geom_off[g]] .. of the output. With labels (one geometry only), extra is
-// (label per output row, the rings offset (scaled, offset side right) as xy and offsets,
-// e0): the output is then scaled by 2^-e0.
-nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In1<i64> UN,
-                       In1<double> DL, double distance, double tolerance, double default_rel,
-                       bool outer, int join, double limit, bool labels, int threads) {
-  const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, ng = (i64)GO.shape(0) - 1;
-  if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
-  const i64 *ro = RO.data(), *go = GO.data(), *rh = RH.data(), *un = UN.data();
-  const double* dl = DL.data();
-  if (nr < 0 || ng < 0 || ro[0] != 0 || ro[nr] != n || go[0] != 0 || go[ng] != nr ||
-      (i64)RH.shape(0) != nr || (i64)UN.shape(0) != ng || (i64)DL.shape(0) != ng)
-    throw nb::value_error("offset: bad offsets");
-  for (i64 r = 0; r < nr; ++r)
-    if (ro[r + 1] < ro[r]) throw nb::value_error("offset: bad ring offsets");
-  for (i64 k = 0; k < ng; ++k)
-    if (go[k + 1] < go[k]) throw nb::value_error("offset: bad geometry offsets");
-  const double* xy = XY.data();
-  for (i64 q = 0; q < 2 * n; ++q)
-    if (!(xy[q] - xy[q] == 0)) throw nb::value_error("offset: non-finite coordinate");
-  if (labels && ng != 1) throw nb::value_error("offset: labels for one geometry only");
+// Scratch of valid_parts.
+struct CheckScratch {
+  std::vector<i64> lpo;
+  std::vector<int> orient;
+  std::vector<std::uint8_t> disc;
+  std::vector<mk::off::Pt> ring;
+  mk::off::Chains chains;
+  std::vector<std::pair<i64, i64>> crossings;
+};
+
+// What a thread of a call works with, kept between calls (its buffers are reused;
+// released when a call left them large). On the heap: an object in thread-local storage
+// would cost a TLS lookup at every use of its members in code specialized for it.
+struct Worker {
+  mk::off::Offsetter off;
+  CheckScratch cs;
+  std::vector<mk::ms::Ring> rings;
+};
+std::unique_ptr<Worker>& worker_slot() {
+  thread_local std::unique_ptr<Worker> w;
+  return w;
+}
+Worker& worker() {
+  auto& slot = worker_slot();
+  if (!slot) slot = std::make_unique<Worker>();
+  return *slot;
+}
+void release_large() {
+  auto& slot = worker_slot();
+  if (slot && slot->off.footprint() > (std::size_t(1) << 22)) slot.reset();
+}
+
+mk::off::Params params(double distance, double tolerance, double default_rel, bool outer,
+                       int join, double limit) {
   mk::off::Params p;
   p.distance = distance;
   p.tolerance = tolerance;
@@ -54,22 +65,13 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   p.outer = outer;
   p.join = join;
   p.limit = limit;
-  std::vector<mk::off::Result> res((std::size_t)ng);
-  {
-    nb::gil_scoped_release nogil;
-    auto work = [&](i64 g0, i64 g1) {
-      mk::off::Offsetter off;
-      std::vector<mk::ms::Ring> rings;
-      for (i64 g = g0; g < g1; ++g) {
-        rings.clear();
-        for (i64 r = go[g]; r < go[g + 1]; ++r)
-          rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], rh[r] != 0));
-        off.run(rings, un[g] != 0, dl[g], p, labels, res[(std::size_t)g]);
-      }
-    };
-    mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) { work(g0, g1); });
-  }
-  // concatenate, closing every ring
+  return p;
+}
+
+// The results as closed rings: (xy (M, 2), ring_off, poly_off, geom_off (G + 1,),
+// info (G, 4): status, code, least tolerance, tolerance used; extra).
+nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
+  const i64 ng = (i64)res.size();
   i64 rows = 0, nrings = 0, npolys = 0;
   for (auto& r : res) {
     rows += (i64)r.rings.xy.size() / 2 + (i64)r.rings.ring_off.size() - 1;
@@ -121,9 +123,162 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
                         owned(oin, (std::size_t)ng, 4), extra);
 }
 
+// offset_rings(xy (N, 2), ring_off (R + 1,), ring_hole (R,), geom_off (G + 1,), unite (G,),
+//              delta (G,), distance, tolerance (NaN: default), default_rel, outer, join,
+//              miter_limit, labels=False, threads=1)
+//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), info (G, 4):
+//       status, code, least tolerance, tolerance used; extra)
+// Geometry g is made of the rings ring_off[geom_off[g]] ..; its result is the polygons
+// poly_off[geom_off[g]] .. of the output. With labels (one geometry only), extra is
+// (label per output row, the rings offset (scaled, offset side right) as xy and offsets,
+// e0): the output is then scaled by 2^-e0.
+nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In1<i64> UN,
+                       In1<double> DL, double distance, double tolerance, double default_rel,
+                       bool outer, int join, double limit, bool labels, int threads) {
+  const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, ng = (i64)GO.shape(0) - 1;
+  if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
+  const i64 *ro = RO.data(), *go = GO.data(), *rh = RH.data(), *un = UN.data();
+  const double* dl = DL.data();
+  if (nr < 0 || ng < 0 || ro[0] != 0 || ro[nr] != n || go[0] != 0 || go[ng] != nr ||
+      (i64)RH.shape(0) != nr || (i64)UN.shape(0) != ng || (i64)DL.shape(0) != ng)
+    throw nb::value_error("offset: bad offsets");
+  for (i64 r = 0; r < nr; ++r)
+    if (ro[r + 1] < ro[r]) throw nb::value_error("offset: bad ring offsets");
+  for (i64 k = 0; k < ng; ++k)
+    if (go[k + 1] < go[k]) throw nb::value_error("offset: bad geometry offsets");
+  const double* xy = XY.data();
+  for (i64 q = 0; q < 2 * n; ++q)
+    if (!(xy[q] - xy[q] == 0)) throw nb::value_error("offset: non-finite coordinate");
+  if (labels && ng != 1) throw nb::value_error("offset: labels for one geometry only");
+  const mk::off::Params p = params(distance, tolerance, default_rel, outer, join, limit);
+  std::vector<mk::off::Result> res((std::size_t)ng);
+  {
+    nb::gil_scoped_release nogil;
+    auto work = [&](i64 g0, i64 g1) {
+      Worker& wk = worker();
+      mk::off::Offsetter& off = wk.off;
+      std::vector<mk::ms::Ring>& rings = wk.rings;
+      for (i64 g = g0; g < g1; ++g) {
+        rings.clear();
+        for (i64 r = go[g]; r < go[g + 1]; ++r)
+          rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], rh[r] != 0));
+        off.run(rings, un[g] != 0, dl[g], p, labels, res[(std::size_t)g]);
+      }
+      release_large();
+    };
+    mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) { work(g0, g1); });
+  }
+  return pack(res, labels);
+}
+
+// Are the P polygons (ring offsets ro[0 .. R], polygon offsets po[0 .. P] minus r0) a
+// valid polygonal set for the offset: each polygon valid and connected, at least one?
+// unite: their interiors overlap or touch (valid parts that the offset unites first).
+// Is one ring of n points (closed or not) simple, by the offset's own exact crossing
+// test (curve_crossings: no two edges meet but consecutive ones at their end, none folds
+// back)? A simple ring of three or more distinct points is a valid polygon; false here
+// only means "not shown": polygon.hpp's validator then decides and names the problem.
+bool simple_ring(const double* xy, i64 n, CheckScratch& cs) {
+  auto& v = cs.ring;
+  v.clear();
+  for (i64 i = 0; i < n; ++i) {
+    const mk::off::Pt q{xy[2 * i], xy[2 * i + 1]};
+    if (!(q.x - q.x == 0) || !(q.y - q.y == 0)) return false;
+    if (v.empty() || v.back().x != q.x || v.back().y != q.y) v.push_back(q);
+  }
+  while (v.size() > 1 && v.front().x == v.back().x && v.front().y == v.back().y) v.pop_back();
+  return v.size() >= 3 && mk::off::curve_crossings(v, cs.crossings, cs.chains, true) &&
+         cs.crossings.empty();
+}
+
+bool valid_parts(const double* xy, const i64* ro, i64 R, const i64* po, i64 P, i64 r0,
+                 CheckScratch& cs, bool& unite) {
+  if (P < 1) return false;
+  unite = false;
+  if (P == 1 && R == 1 && simple_ring(xy + 2 * ro[0], ro[1] - ro[0], cs)) return true;
+  std::vector<i64>& lpo = cs.lpo;
+  std::vector<int>& orient = cs.orient;
+  std::vector<std::uint8_t>& disc = cs.disc;
+  lpo.resize((std::size_t)P + 1);
+  for (i64 q = 0; q <= P; ++q) lpo[q] = po[q] - r0;
+  orient.resize((std::size_t)R);
+  disc.resize((std::size_t)P);
+  if (!mk::polygon::check(xy, ro, R, lpo.data(), P, false, orient.data(), disc.data()).ok())
+    return false;
+  for (i64 q = 0; q < P; ++q)
+    if (disc[q]) return false;
+  unite = P > 1 &&
+          !mk::polygon::check(xy, ro, R, lpo.data(), P, true, orient.data(), disc.data()).ok();
+  return true;
+}
+
+// offset_polygons(xy (N, 2), ring_off (R + 1,), poly_off (P + 1,), geom_off (G + 1,),
+//                 distance (G,), tolerance (G,) (NaN: default), default_rel, outer, join,
+//                 miter_limit, delta, threads=1) -> as offset_rings (info code INPUT:
+//                 not read here)
+// Shapely geometries as flat arrays (polygon_arrays: closed rings, shell first, any
+// orientation). Each geometry is checked here, with the GIL released: a polygon of one
+// ring shown simple by the offset's exact crossing test, anything else by polygon.hpp's
+// exact validator; a geometry it refuses (invalid, flat, empty, a hole that splits its
+// polygon) gets code INPUT and is left to the caller's reader, which names the problem
+// or reads it otherwise. The parts of a multipolygon that overlap or touch are united
+// first, as the reader's "parts" validation has the caller do.
+nb::tuple offset_polygons(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> GO,
+                          In1<double> DS, In1<double> TS, double default_rel, bool outer,
+                          int join, double limit, double delta, int threads) {
+  const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, np_ = (i64)PO.shape(0) - 1,
+            ng = (i64)GO.shape(0) - 1;
+  if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
+  const i64 *ro = RO.data(), *po = PO.data(), *go = GO.data();
+  if (nr < 0 || np_ < 0 || ng < 0 || ro[0] != 0 || ro[nr] != n || po[0] != 0 || po[np_] != nr ||
+      go[0] != 0 || go[ng] != np_ || (i64)DS.shape(0) != ng || (i64)TS.shape(0) != ng)
+    throw nb::value_error("offset: bad offsets");
+  for (i64 r = 0; r < nr; ++r)
+    if (ro[r + 1] < ro[r]) throw nb::value_error("offset: bad ring offsets");
+  for (i64 q = 0; q < np_; ++q)
+    if (po[q + 1] <= po[q]) throw nb::value_error("offset: bad polygon offsets");
+  for (i64 k = 0; k < ng; ++k)
+    if (go[k + 1] < go[k]) throw nb::value_error("offset: bad geometry offsets");
+  const mk::off::Params base = params(0, NAN, default_rel, outer, join, limit);
+  const double *xy = XY.data(), *ds = DS.data(), *ts = TS.data();
+  std::vector<mk::off::Result> res((std::size_t)ng);
+  {
+    nb::gil_scoped_release nogil;
+    mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) {
+      Worker& wk = worker();
+      mk::off::Offsetter& off = wk.off;
+      std::vector<mk::ms::Ring>& rings = wk.rings;
+      CheckScratch& cs = wk.cs;
+      for (i64 g = g0; g < g1; ++g) {
+        mk::off::Result& out = res[(std::size_t)g];
+        const i64 p0 = go[g], p1 = go[g + 1], P = p1 - p0, r0 = po[p0], R = po[p1] - r0;
+        bool unite = false;
+        if (!valid_parts(xy, ro + r0, R, po + p0, P, r0, cs, unite)) {
+          out = mk::off::Result();
+          out.code = mk::off::INPUT;
+          continue;
+        }
+        rings.clear();
+        for (i64 q = p0; q < p1; ++q)
+          for (i64 r = po[q]; r < po[q + 1]; ++r)
+            rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], r != po[q]));
+        mk::off::Params p = base;
+        p.distance = ds[g];
+        p.tolerance = ts[g];
+        off.run(rings, unite, delta, p, false, out);
+      }
+      release_large();
+    });
+  }
+  return pack(res, false);
+}
+
 }  // namespace
 
 void bind_offset(nb::module_& m) {
+  m.def("offset_polygons", &offset_polygons, "xy"_a.noconvert(), "ring_off"_a.noconvert(),
+        "poly_off"_a.noconvert(), "geom_off"_a.noconvert(), "distance"_a.noconvert(),
+        "tolerance"_a.noconvert(), "default_rel"_a, "outer"_a, "join"_a, "miter_limit"_a, "delta"_a, "threads"_a = 1);
   m.def("offset_rings", &offset_rings, "xy"_a.noconvert(), "ring_off"_a.noconvert(),
         "ring_hole"_a.noconvert(), "geom_off"_a.noconvert(), "unite"_a.noconvert(),
         "delta"_a.noconvert(), "distance"_a, "tolerance"_a, "default_rel"_a, "outer"_a,
@@ -142,6 +297,7 @@ void bind_offset(nb::module_& m) {
   m.attr("OFFSET_UNDERFLOW") = (int)mk::off::UNDERFLOW;
   m.attr("OFFSET_UNCERTIFIED") = (int)mk::off::UNCERTIFIED;
   m.attr("OFFSET_OVERFLOWS") = (int)mk::off::OVERFLOWS;
+  m.attr("OFFSET_INPUT") = (int)mk::off::INPUT;
   m.attr("OFFSET_DETOUR") = (long long)mk::off::DETOUR;
 }
 

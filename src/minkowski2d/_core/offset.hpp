@@ -75,10 +75,103 @@
 #include "exactnum.hpp"
 #include "minkowski.hpp"
 #include "offset_curve.hpp"
+#include "offset_prune.hpp"
 #include "overlay.hpp"
 
 namespace mk {
 namespace off {
+
+// ------------------------------------------------------------------------------------
+// the rings' edges in a uniform grid (the distance check of a pruned result)
+
+class EdgeGrid {
+ public:
+  // cells of side at least h (and not more cells than about four per edge); marked
+  // (optional, one ring only: one per vertex): only the edges with a marked end
+  void build(const std::vector<std::vector<Pt>>& rings, double h,
+             const std::vector<char>* marked = nullptr) {
+    a_.clear();
+    b_.clear();
+    for (const auto& v : rings)
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const std::size_t j = (i + 1) % v.size();
+        if (marked && !(*marked)[i] && !(*marked)[j]) continue;  // one ring
+        a_.push_back(v[i]);
+        b_.push_back(v[j]);
+      }
+    const i64 n = (i64)a_.size();
+    if (n == 0) {
+      X0_ = Y0_ = 0;
+      nx_ = ny_ = 1;
+      start_.assign(2, 0);
+      return;
+    }
+    X0_ = Y0_ = INFINITY;
+    double X1 = -INFINITY, Y1 = -INFINITY;
+    for (i64 i = 0; i < n; ++i) {
+      X0_ = std::min({X0_, a_[i].x, b_[i].x});
+      X1 = std::max({X1, a_[i].x, b_[i].x});
+      Y0_ = std::min({Y0_, a_[i].y, b_[i].y});
+      Y1 = std::max({Y1, a_[i].y, b_[i].y});
+    }
+    const double W = X1 - X0_, H = Y1 - Y0_;
+    const double cs = std::max(h, std::sqrt(W * H / (4.0 * (double)n)));
+    const double fx = W / cs, fy = H / cs;
+    nx_ = fx < 1023 ? (i64)fx + 1 : 1024;  // also for NaN
+    ny_ = fy < 1023 ? (i64)fy + 1 : 1024;
+    ix_ = (double)nx_ / W;
+    iy_ = (double)ny_ / H;
+    if (!(std::isfinite(ix_) && std::isfinite(iy_) && W > 0 && H > 0)) {
+      nx_ = ny_ = 1;  // degenerate extents: one cell
+      ix_ = iy_ = 0;
+    }
+    start_.assign((std::size_t)(nx_ * ny_ + 1), 0);
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1) {
+        for (i64 c = 0; c < nx_ * ny_; ++c) start_[c + 1] += start_[c];
+        item_.resize((std::size_t)start_[nx_ * ny_]);
+        fill_.assign(start_.begin(), start_.end() - 1);
+      }
+      for (i64 i = 0; i < n; ++i) {
+        const i64 cx0 = cx(std::min(a_[i].x, b_[i].x)), cx1 = cx(std::max(a_[i].x, b_[i].x));
+        const i64 cy0 = cy(std::min(a_[i].y, b_[i].y)), cy1 = cy(std::max(a_[i].y, b_[i].y));
+        for (i64 y = cy0; y <= cy1; ++y)
+          for (i64 x = cx0; x <= cx1; ++x) {
+            if (pass == 0) ++start_[y * nx_ + x + 1];
+            else item_[fill_[y * nx_ + x]++] = i;
+          }
+      }
+    }
+    stamp_.assign((std::size_t)n, -1);
+    query_ = 0;
+  }
+  // f(c, d) for each edge c -> d registered in a cell that the box meets (once each);
+  // false from f stops (returned)
+  template <class F>
+  bool query(double x0, double x1, double y0, double y1, F&& f) {
+    ++query_;
+    const i64 X0 = cx(x0), X1 = cx(x1), Y0 = cy(y0), Y1 = cy(y1);
+    for (i64 y = Y0; y <= Y1; ++y)
+      for (i64 x = X0; x <= X1; ++x)
+        for (i64 q = start_[y * nx_ + x]; q < start_[y * nx_ + x + 1]; ++q) {
+          const i64 i = item_[q];
+          if (stamp_[i] == query_) continue;
+          stamp_[i] = query_;
+          if (!f(a_[i], b_[i])) return false;
+        }
+    return true;
+  }
+
+ private:
+  std::vector<Pt> a_, b_;
+  std::vector<i64> start_, item_, fill_, stamp_;
+  double X0_ = 0, Y0_ = 0, ix_ = 1, iy_ = 1;
+  i64 nx_ = 1, ny_ = 1, query_ = 0;
+  // cell indices: floor is monotone, so a box meets the cells of its two corners' range
+  i64 cx(double x) const { return cell(std::floor((x - X0_) * ix_), nx_); }
+  i64 cy(double y) const { return cell(std::floor((y - Y0_) * iy_), ny_); }
+  static i64 cell(double t, i64 n) { return !(t >= 0) ? 0 : (t >= (double)n ? n - 1 : (i64)t); }
+};
 
 // ------------------------------------------------------------------------------------
 // one polygonal set
@@ -115,11 +208,13 @@ class Offsetter {
     const double r0 = std::fabs(p.distance);
     const bool grow = p.distance > 0;
     // rings with the inside on the left
-    std::vector<std::vector<Pt>> rings;
+    std::vector<std::vector<Pt>>& rings = rings_;
+    for (auto& v : rings) v.clear();
+    rings.resize(unite ? 0 : input.size());
     if (unite) {
       united(input, rings, delta);
     } else {
-      for (const ms::Ring& r : input) rings.push_back(to_pts(r));
+      for (std::size_t k = 0; k < input.size(); ++k) to_pts(input[k], rings[k]);
     }
     for (auto& v : rings) drop_straight(v);
     if (r0 == 0) {  // the polygon itself (regularized: the overlay of its rings)
@@ -153,12 +248,14 @@ class Offsetter {
     // them; then vertices may coincide or become collinear: cleaned again), in the curve's
     // frame (offset side on the right)
     const Pow2 down_scale(-e0);
-    std::vector<std::vector<Pt>> sc;
+    std::vector<std::vector<Pt>>& sc = sc_;
+    std::size_t nsc = 0;
     for (auto& v0 : rings) {
       if (v0.empty()) continue;
       if (!grow && v0.size() < 3) continue;  // no area: nothing to shrink
-      std::vector<Pt> sv;
-      sv.reserve(v0.size());
+      if (sc.size() <= nsc) sc.emplace_back();
+      std::vector<Pt>& sv = sc[nsc];
+      sv.clear();
       for (const Pt& q : v0) {
         Pt t{down_scale(q.x), down_scale(q.y)};
         if (sv.empty() || sv.back().x != t.x || sv.back().y != t.y) sv.push_back(t);
@@ -168,13 +265,63 @@ class Offsetter {
       drop_straight(sv);
       if (!grow && sv.size() < 3) continue;
       if (!grow) std::reverse(sv.begin(), sv.end());
-      sc.push_back(std::move(sv));
+      ++nsc;
+    }
+    sc.resize(nsc);
+    // a shrink of a set narrower than 2r (its box, the rings' error delta added) is empty:
+    // a disk of radius r inside it would need a box of width 2r. The float width W and
+    // dl are within a relative 2^-52 of the exact ones, the margins 2^-40 far above.
+    bool narrow = false;
+    if (!grow) {
+      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+      for (auto& v : sc)
+        for (const Pt& q : v) {
+          x0 = std::min(x0, q.x);
+          x1 = std::max(x1, q.x);
+          y0 = std::min(y0, q.y);
+          y1 = std::max(y1, q.y);
+        }
+      const double W = std::min(x1 - x0, y1 - y0);
+      narrow = (W + 2 * dl) * (1 + 0x1p-40) < 2 * s.r * (1 - 0x1p-40);
     }
     if (!set_tolerances(p, grow, want_labels, least, mu, e0, sc, s, res)) return;
-    // the curves
-    const int w = grow ? 1 : -1;
+    if (narrow) {  // every ring shrinks away: the empty set, on either side
+      finish(e0, want_labels, res);
+      return;
+    }
+    // the curves, pruned (round joins), one simple curve taken as it is, else the overlay;
+    // a pruned result must pass the check of its lower bound, else it is computed again
+    // unpruned
+    const bool prune = p.join == ROUND && !want_labels;
+    if (!curves(sc, s, want_labels, prune, res)) return;
+    if (pruned_ && !covers(res.rings, sc, s.r_check, direct_ ? &affected_[0] : nullptr)) {
+      res.rings.clear();
+      if (!curves(sc, s, want_labels, false, res)) return;
+    }
+    finish(e0, want_labels, res);
+  }
+
+ private:
+  Pruner pruner_;
+  bool pruned_ = false;
+  bool direct_ = false;  // the result is the one pruned curve itself
+  std::vector<const std::vector<Pt>*> ring_;
+  std::vector<std::pair<i64, i64>> cross_;
+  Chains cscr_;
+  EdgeGrid grid_;
+  std::vector<std::vector<char>> affected_;  // per curve, the cuts' ring vertices
+  BoxScratch boxes_;
+
+  std::vector<double> cbox_;
+
+  // Builds the curves of the rings sc (pruned when asked) and their region in
+  // res.rings; false (res.code set) when a piece fails its certificate.
+  bool curves(const std::vector<std::vector<Pt>>& sc, const Setup& s, bool want_labels,
+              bool prune, Result& res) {
     i64 base = 0;
     std::size_t nc = 0;
+    pruned_ = false;
+    ring_.clear();
     for (const std::vector<Pt>& sv : sc) {
       if (sv.empty()) continue;
       if (curves_.size() <= nc) curves_.emplace_back();
@@ -182,8 +329,9 @@ class Offsetter {
       cv.build(sv, s, base);
       if (!cv.certified) {
         res.code = UNCERTIFIED;
-        return;
+        return false;
       }
+      ring_.push_back(&sv);
       if (want_labels) {
         for (const Pt& q : sv) {
           res.used_xy.push_back(q.x);
@@ -193,29 +341,122 @@ class Offsetter {
       }
       base += (i64)sv.size();
     }
-    // one simple curve: it is the boundary (no overlay)
-    if (nc == 1 && simple(curves_[0].pts)) {
-      direct(curves_[0], grow, want_labels, res);
-    } else {
-      ov::Geo g;
-      std::vector<ov::EdgeIn> in;
-      std::vector<i64> line_label;
-      for (std::size_t k = 0; k < nc; ++k) add_curve(g, curves_[k].pts, curves_[k].lab, w, in, line_label);
-      ov::Overlay o(g);
-      o.run(in, ov::UNION, res.rings);
-      if (want_labels) {
-        // the lines of the output edges, unless the overlay had to re-node its rounded
-        // rings (then they are unknown: DETOUR, and offset_arcs labels by distances)
-        const std::size_t nv = res.rings.xy.size() / 2;
-        res.labels.assign(nv, DETOUR);
-        if (res.rings.line.size() == nv)
-          for (std::size_t k = 0; k < nv; ++k) res.labels[k] = line_label[res.rings.line[k]];
+    // crossings: a single curve without any is the boundary; swallowed loops pruned
+    bool one_simple = false;
+    for (std::size_t k = 0; k < nc && (prune || nc == 1); ++k) {
+      Curve& cv = curves_[k];
+      const bool clean = curve_crossings(cv.pts, cross_, cscr_, true);
+      one_simple = clean && cross_.empty();
+      if (one_simple || !prune) continue;
+      if (affected_.size() <= k) affected_.resize(k + 1);
+      affected_[k].assign(ring_[k]->size(), 0);
+      bool pr = pruner_.run(cv, *ring_[k], s, nullptr, affected_[k]);
+      one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
+      // (a second pass starts away from the crossings the first left: a loop across its
+      // start)
+      for (int pass = 0; pass < 2 && !one_simple; ++pass) {
+        bool pr2 = pruner_.run(cv, *ring_[k], s, &cross_, affected_[k]);
+        if (!pr2) break;
+        pr = true;
+        one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
       }
+      pruned_ = pruned_ || pr;
     }
-    finish(e0, want_labels, res);
+    direct_ = nc == 1 && one_simple;
+    if (direct_) {
+      direct(curves_[0], s.grow, want_labels, res);
+      return true;
+    }
+    ov::Geo g;
+    std::vector<ov::EdgeIn> in;
+    std::vector<i64> line_label;
+    const int w = s.grow ? 1 : -1;
+    for (std::size_t k = 0; k < nc; ++k)
+      add_curve(g, curves_[k].pts, curves_[k].lab, w, in, line_label);
+    ov::Overlay o(g);
+    o.run(in, ov::UNION, res.rings);
+    if (want_labels) {
+      // the lines of the output edges, unless the overlay had to re-node its rounded
+      // rings (then they are unknown: DETOUR, and offset_arcs labels by distances)
+      const std::size_t nv = res.rings.xy.size() / 2;
+      res.labels.assign(nv, DETOUR);
+      if (res.rings.line.size() == nv)
+        for (std::size_t k = 0; k < nv; ++k) res.labels[k] = line_label[res.rings.line[k]];
+    }
+    return true;
   }
 
- private:
+  // Is every edge of the result R (scaled) at distance >= t from the rings sc? Exact:
+  // segment pairs whose boxes come within t, then orientations and distances. marked
+  // (the one ring's cut vertices, when R is the pruned curve itself, unrounded): from
+  // the edges at marked vertices only (see the header of offset_prune.hpp).
+  bool covers(const ov::Rings& R, const std::vector<std::vector<Pt>>& sc, double t,
+              const std::vector<char>* marked) {
+    if (R.status != OK) return true;  // an error is reported as it is
+    // the output's edges widened by t (and more than the rounding of the widening)
+    double M = 0;
+    for (double c : R.xy) M = std::max(M, std::fabs(c));
+    const double w = t * (1 + 0x1p-40) + span_slack(M);
+    grid_.build(sc, w, marked);
+    for (std::size_t k = 0; k + 1 < R.ring_off.size(); ++k) {
+      const i64 r0 = R.ring_off[k], r1 = R.ring_off[k + 1];
+      for (i64 i = r0; i < r1; ++i) {
+        const i64 j = i + 1 < r1 ? i + 1 : r0;
+        const Pt p{R.xy[2 * i], R.xy[2 * i + 1]}, q{R.xy[2 * j], R.xy[2 * j + 1]};
+        const double x0 = std::min(p.x, q.x) - w, x1 = std::max(p.x, q.x) + w,
+                     y0 = std::min(p.y, q.y) - w, y1 = std::max(p.y, q.y) + w;
+        const bool ok = grid_.query(x0, x1, y0, y1, [&](Pt c, Pt d) {
+          if (std::max(c.x, d.x) < x0 || std::min(c.x, d.x) > x1 || std::max(c.y, d.y) < y0 ||
+              std::min(c.y, d.y) > y1)
+            return true;
+          return far_apart(p, q, c, d, t);
+        });
+        if (!ok) return false;
+      }
+    }
+    return true;
+  }
+
+  // Are the segments pq and cd at distance >= t (exactly)? They must not cross (boxes
+  // apart, or the orientations), and each end must be at distance >= t from the other
+  // segment: first in double -- with every coordinate below 2 in magnitude (the scaled
+  // problem) a squared point-segment distance computed as in seg_d2 is within 2^-44 of
+  // the exact one (differences and products below 64, a few roundings each; a projection
+  // outside its segment taken as inside or the reverse changes it by the square of the
+  // rounding of the dot product, far less), so one at least t^2 + 2^-40 decides -- else
+  // exactly (seg_dist_cmp).
+  static bool far_apart(Pt p, Pt q, Pt c, Pt d, double t) {
+    const bool apart = std::max(p.x, q.x) < std::min(c.x, d.x) ||
+                       std::max(c.x, d.x) < std::min(p.x, q.x) ||
+                       std::max(p.y, q.y) < std::min(c.y, d.y) ||
+                       std::max(c.y, d.y) < std::min(p.y, q.y);
+    if (!apart && cross_properly(p, q, c, d)) return false;
+    const double big = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(q.x), std::fabs(q.y),
+                                 std::fabs(c.x), std::fabs(c.y), std::fabs(d.x), std::fabs(d.y)});
+    const bool fl = big < 2 && t < 2;
+    const double lim = t * t + 0x1p-40;
+    auto far = [&](Pt a, Pt b, Pt x) {
+      if (fl && seg_d2(a, b, x) >= lim) return true;
+      return seg_dist_cmp(a, b, x, t) >= 0;
+    };
+    return far(c, d, p) && far(c, d, q) && far(p, q, c) && far(p, q, d);
+  }
+
+  static double seg_d2(Pt a, Pt b, Pt p) {
+    const double dx = b.x - a.x, dy = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+    const double dot = px * dx + py * dy;
+    if (dot <= 0) return px * px + py * py;
+    const double L = dx * dx + dy * dy;
+    if (dot >= L) {
+      const double qx = p.x - b.x, qy = p.y - b.y;
+      return qx * qx + qy * qy;
+    }
+    const double cr = px * dy - py * dx;
+    return cr * cr / L;
+  }
+
+
+
   // The polygon itself, regularized: the overlay of its rings (distance 0).
   static void regularized(const std::vector<std::vector<Pt>>& rings, Result& res) {
     ov::Geo g;
@@ -291,6 +532,8 @@ class Offsetter {
         s.phimax = std::min(2 * std::acos(ct / s.rho), M_PI);
         s.eta = 2 * s.mc / s.rho;
       }
+      // the lower radius plus delta: t_cov - m >= r_lo + mu - m >= r_lo + delta
+      s.r_check = up(s.t_cov - 0x1p-50);
     } else {
       s.circ = true;
       s.rho = s.r;
@@ -299,53 +542,22 @@ class Offsetter {
   }
 
   std::vector<Curve> curves_;
+  std::vector<std::vector<Pt>> rings_, sc_;  // the rings read, scaled (reused)
 
-  // Is the closed polyline p simple (no two segments meet but consecutive ones at their
-  // common end, no segment of length zero)? Exact: boxes, then orientations.
-  static bool simple(const std::vector<Pt>& p) {
-    const i64 n = (i64)p.size();
-    if (n < 3) return false;
-    std::vector<double> x0(n), x1(n), y0(n), y1(n);
-    for (i64 i = 0; i < n; ++i) {
-      const Pt &a = p[i], &b = p[(i + 1) % n];
-      if (a.x == b.x && a.y == b.y) return false;
-      x0[i] = std::min(a.x, b.x);
-      x1[i] = std::max(a.x, b.x);
-      y0[i] = std::min(a.y, b.y);
-      y1[i] = std::max(a.y, b.y);
-    }
-    bool ok = true;
-    box_pairs(n, x0.data(), x1.data(), y0.data(), y1.data(), [&](i64 i, i64 j) {
-      if (!ok) return;
-      const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[j], &d = p[(j + 1) % n];
-      if (j == i + 1 || (i == 0 && j == n - 1)) {
-        // consecutive: they must not fold back onto each other
-        const Pt &u = j == i + 1 ? a : c, &m = j == i + 1 ? b : d, &z = j == i + 1 ? d : b;
-        if (orient(u, m, z) == 0 && dot_sign(u, m, m, z) < 0) ok = false;
-        return;
-      }
-      int o1 = orient(a, b, c), o2 = orient(a, b, d);
-      if (o1 * o2 > 0) return;
-      int o3 = orient(c, d, a), o4 = orient(c, d, b);
-      if (o3 * o4 > 0) return;
-      if (o1 == 0 && o2 == 0) {
-        // collinear: they meet when their extents along the line overlap
-        auto key = [&](const Pt& q) { return a.x != b.x ? q.x : q.y; };
-        double s0 = std::min(key(a), key(b)), s1 = std::max(key(a), key(b));
-        double t0 = std::min(key(c), key(d)), t1 = std::max(key(c), key(d));
-        if (t0 > s1 || s0 > t1) return;
-      }
-      ok = false;
-    });
-    return ok;
+ public:
+  // about how many points its buffers hold (the curves')
+  std::size_t footprint() const {
+    std::size_t n = 0;
+    for (const Curve& c : curves_) n += c.pts.capacity();
+    return n;
   }
 
+ private:
   // The region of one simple curve: its inside when it turns the way the rule selects
   // (counter-clockwise for a grow, clockwise for a shrink, whose curve has weight -1),
   // else nothing. Straight vertices dropped, from the least (x, y) vertex.
   static void direct(const Curve& cv, bool grow, bool want_labels, Result& res) {
-    std::vector<Pt> p = cv.pts;
-    std::vector<i64> lab = cv.lab;
+    const std::vector<Pt>& p = cv.pts;
     const std::size_t n = p.size();
     std::size_t lo = 0;
     for (std::size_t i = 1; i < n; ++i)
@@ -354,27 +566,20 @@ class Offsetter {
     ov::Rings& R = res.rings;
     R.clear();
     if ((o > 0) != grow) return;  // winding -1 inside (a shrink that erases everything)
-    if (!grow) {
-      std::reverse(p.begin(), p.end());
-      std::vector<i64> rl(n);
-      for (std::size_t i = 0; i < n; ++i) rl[i] = lab[(2 * n - 2 - i) % n];
-      lab.swap(rl);
-      lo = n - 1 - lo;
-    }
-    std::vector<Pt> q;
-    std::vector<i64> ql;
-    for (std::size_t k = 0; k < n; ++k) {  // lo is extreme (never straight): q starts there
-      std::size_t i = (lo + k) % n;
+    // from lo, forwards (grow) or backwards (shrink: the label of the edge from point i
+    // to point i - 1 is that of the curve's edge i - 1), straight vertices dropped (lo is
+    // extreme, never straight)
+    R.xy.reserve(2 * n);
+    i64 count = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = grow ? (lo + k) % n : (lo + n - k) % n;
       if (orient(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) == 0) continue;  // straight on
-      q.push_back(p[i]);
-      ql.push_back(lab[i]);
+      R.xy.push_back(p[i].x);
+      R.xy.push_back(p[i].y);
+      if (want_labels) res.labels.push_back(grow ? cv.lab[i] : cv.lab[(i + n - 1) % n]);
+      ++count;
     }
-    for (std::size_t k = 0; k < q.size(); ++k) {
-      R.xy.push_back(q[k].x);
-      R.xy.push_back(q[k].y);
-      if (want_labels) res.labels.push_back(ql[k]);
-    }
-    R.ring_off.push_back((i64)q.size());
+    R.ring_off.push_back(count);
     R.poly_off.push_back(1);
   }
 
@@ -424,7 +629,10 @@ class Offsetter {
         v.push_back(Pt{out.xy[2 * i], out.xy[2 * i + 1]});
       rings.push_back(std::move(v));
     }
-    for (const ms::Ring& r : pts_only) rings.push_back(to_pts(r));
+    for (const ms::Ring& r : pts_only) {
+      rings.emplace_back();
+      to_pts(r, rings.back());
+    }
     if (big > 0) {
       int e;
       std::frexp(big, &e);

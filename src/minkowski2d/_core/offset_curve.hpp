@@ -27,6 +27,7 @@ enum Code : int {
   UNDERFLOW = 3,    // a result of magnitude below 2^-1020 (rounding may exceed the margin)
   UNCERTIFIED = 4,  // a piece failed its exact certificate (never expected: a bug)
   OVERFLOWS = 5,    // a result coordinate beyond float64
+  INPUT = 6,        // offset_polygons: not a valid polygonal set here (the reader decides)
 };
 
 // label of a curve segment that is a detour through a vertex of the polygon
@@ -52,12 +53,10 @@ inline int sign_of(F&& f) {
 // orientation of (a, b, c): +1 counter-clockwise
 inline int orient(Pt a, Pt b, Pt c) { return mk::orient(a.x, a.y, b.x, b.y, c.x, c.y); }
 
-// sign of (b - a) . (d - c)
+// sign of (b - a) . (d - c): the cross product of b - a with d - c turned by 90 degrees
+// (the points (-y, x): exact), so exact.hpp's filtered cross sign decides it
 inline int dot_sign(Pt a, Pt b, Pt c, Pt d) {
-  return sign_of([&](auto z) {
-    return (num(z, b.x) - num(z, a.x)) * (num(z, d.x) - num(z, c.x)) +
-           (num(z, b.y) - num(z, a.y)) * (num(z, d.y) - num(z, c.y));
-  });
+  return mk::cross_sign(a.x, a.y, b.x, b.y, -c.y, c.x, -d.y, d.x);
 }
 
 // sign of dist(p, line ab)^2 - t^2, i.e. of cross(b - a, p - a)^2 - t^2 |b - a|^2
@@ -77,6 +76,13 @@ inline int dist_cmp(Pt v, Pt p, double t) {
     auto tt = num(z, t);
     return dx * dx + dy * dy - tt * tt;
   });
+}
+
+// sign of dist(p, segment ab) - t (a segment of one point is that point)
+inline int seg_dist_cmp(Pt a, Pt b, Pt p, double t) {
+  if (dot_sign(a, p, a, b) <= 0) return dist_cmp(a, p, t);
+  if (dot_sign(b, p, b, a) <= 0) return dist_cmp(b, p, t);
+  return line_dist_cmp(a, b, p, t);
 }
 
 // x * 2^k as ldexp does (exact unless the result is subnormal), by at most two
@@ -110,6 +116,7 @@ struct Setup {
   double phimax = 0;  // largest angle of one corner (circ) or chord (inscribed)
   double eta = 0;     // inscribed: angle of the first/last point past the normals
   double limit = 2;   // miter limit
+  double r_check = 0; // a pruned result's edges keep this distance from the polygon
 };
 
 // ------------------------------------------------------------------------------------
@@ -156,25 +163,38 @@ inline void drop_straight(std::vector<Pt>& v) {
   v.swap(out);
 }
 
-inline std::vector<Pt> to_pts(const ms::Ring& r) {
-  std::vector<Pt> v((std::size_t)r.n());
+inline void to_pts(const ms::Ring& r, std::vector<Pt>& v) {
+  v.resize((std::size_t)r.n());
   for (i64 i = 0; i < r.n(); ++i) v[i] = Pt{r.x(i), r.y(i)};
-  return v;
 }
 
 // ------------------------------------------------------------------------------------
 // the curve of one ring
 
+// Features of a ring, for the pruning (offset_prune.hpp): edge j (v_j -> v_{j+1}) is 2j,
+// vertex j is 2j + 1.
+inline i64 edge_feature(i64 j) { return 2 * j; }
+inline i64 vertex_feature(i64 j) { return 2 * j + 1; }
+
 class Curve {
  public:
   std::vector<Pt> pts;   // the closed curve
   std::vector<i64> lab;  // label of segment k -> k + 1: edge e (>= 0), -1 - vertex, DETOUR
+  // Bookkeeping of the pieces (round joins): point k is attached to ring vertex anc[k]
+  // (nondecreasing along the curve, by 0 or 1 per segment) and lies within t_up of the
+  // feature pf[k], which contains that vertex; segment k -> k + 1 lies within t_up of
+  // sf[k], which contains anc[k + 1]. The piece of segment k is the polygon anc[k], pts[k],
+  // pts[k + 1], anc[k + 1] closed along the ring back to anc[k].
+  std::vector<i64> anc, pf, sf;
   bool certified = true;
 
   // v: the ring (n >= 1), offset side on the right; base: global index of v[0]
   void build(const std::vector<Pt>& v, const Setup& s, i64 base) {
     pts.clear();
     lab.clear();
+    anc.clear();
+    pf.clear();
+    sf.clear();
     certified = true;
     const std::size_t n = v.size();
     if (n == 1) {
@@ -203,16 +223,23 @@ class Curve {
     trim(v, s);
     // the curve: chains joined by the moved edges
     for (std::size_t j = 0; j < n; ++j) {
+      const i64 J = (i64)j;
       if (trim_[j]) {  // a trimmed detour: the crossing of the moved edges
         pts.push_back(tx_[j]);
-        lab.push_back(base + (i64)j);
+        lab.push_back(base + J);
+        anc.push_back(J);
+        pf.push_back(edge_feature((J + (i64)n - 1) % (i64)n));  // within t_up of edge in
+        sf.push_back(edge_feature(J));
         continue;
       }
       std::size_t k0 = cs_[j], k1 = cs_[j + 1];
-      i64 vl = fan_[j] ? -1 - (base + (i64)j) : DETOUR;
+      i64 vl = fan_[j] ? -1 - (base + J) : DETOUR;
       for (std::size_t k = k0; k < k1; ++k) {
         pts.push_back(chain_[k]);
-        lab.push_back(k + 1 < k1 ? vl : base + (i64)j);  // the last: moved edge j
+        lab.push_back(k + 1 < k1 ? vl : base + J);  // the last: moved edge j
+        anc.push_back(J);
+        pf.push_back(vertex_feature(J));
+        sf.push_back(k + 1 < k1 ? vertex_feature(J) : edge_feature(J));
       }
     }
   }

@@ -44,6 +44,7 @@ from .._core._ext import (  # the kernels: the whole surface between Python and 
     merge_record_i,
     normalize_f,
     normalize_i,
+    offset_polygons,
     offset_rings,
     orient_f,
     orient_i,
@@ -87,6 +88,7 @@ __all__ = [
     "merge_record_i",
     "normalize_f",
     "normalize_i",
+    "offset_polygons",
     "offset_rings",
     "orient_f",
     "orient_i",
@@ -192,6 +194,7 @@ OFFSET_TOLERANCE: int = _ext.OFFSET_TOLERANCE
 OFFSET_DISTANCE: int = _ext.OFFSET_DISTANCE
 OFFSET_UNDERFLOW: int = _ext.OFFSET_UNDERFLOW
 OFFSET_OVERFLOWS: int = _ext.OFFSET_OVERFLOWS
+OFFSET_INPUT: int = _ext.OFFSET_INPUT
 OFFSET_DETOUR: int = _ext.OFFSET_DETOUR
 #: The navigation mesh's build codes (navmesh.hpp).
 MESH_OK: int = _ext.MESH_OK

@@ -53,10 +53,11 @@ from __future__ import annotations
 
 from .arcs import ARC_STRAIGHT_ULPS as ARC_STRAIGHT_ULPS
 from .arcs import VERIFY_RESOLUTION, OffsetArcs, offset_arcs
-from .curves import APPROX, DEFAULT_TOLERANCE, JOINS, offset
+from .curves import APPROX, DEFAULT_TOLERANCE, JOINS, offset, offset_many
 
 __all__ = [
     "offset",
+    "offset_many",
     "offset_arcs",
     "OffsetArcs",
     "DEFAULT_TOLERANCE",

@@ -13,11 +13,13 @@ from .._engine import core
 from .._engine import options as _options
 from .._engine.arcs import DEFAULT_RELATIVE_TOLERANCE
 from .._engine.containers import is_many
+from .._engine.polygon import polygon_arrays
 from .._engine.reader import PARTS, read
 from .._engine.status import status_error
 from ..errors import (
     GeometryError,
     OverflowGeometryError,
+    ShapeError,
 )
 
 #: The default ``tolerance`` of :func:`offset`, relative to the radius: ``1e-3 · |r|``
@@ -114,6 +116,7 @@ def _run(
     lim: float,
     extra_delta: float = 0.0,
     labels: bool = False,
+    threads: int = 1,
 ) -> tuple:
     """One compiled call for all ``inputs``: the raw result of ``core.offset_rings``."""
     if len(inputs) == 1:
@@ -147,8 +150,58 @@ def _run(
         _JOIN_CODE[join],
         lim,
         labels,
-        1,
+        threads,
     )
+
+
+#: shapely type ids the core reads and checks itself (offset_polygons)
+_POLYGONAL_IDS = (3, 6)
+#: a float64 ring as an (n, 2) ndarray: read as it is
+_F64 = np.dtype(np.float64)
+
+
+def _fast(obj: Any) -> bool:
+    """Is ``obj`` a shapely Polygon or MultiPolygon (read and checked by the core)?"""
+    import shapely
+
+    return type(obj) in (shapely.Polygon, shapely.MultiPolygon) or (
+        isinstance(obj, shapely.Geometry) and shapely.lib.get_type_id(obj) in _POLYGONAL_IDS
+    )
+
+
+def _ring_arrays(a: np.ndarray) -> tuple:
+    """A float64 (n, 2) ring as the arrays of offset_polygons."""
+    xy = np.ascontiguousarray(a)
+    return xy, np.array([0, len(xy)], np.int64), _GEOM1, _GEOM1
+
+
+def _run_polygons(
+    arrays: tuple,
+    d: Any,
+    tol: Any,
+    approx: str,
+    join: str,
+    lim: float,
+    delta: float,
+    threads: int,
+) -> tuple:
+    """One compiled call reading, checking and offsetting shapely polygons (the arrays of
+    polygon_arrays); a geometry the core does not take has code OFFSET_INPUT. ``d`` and
+    ``tol`` are one value for all or one per geometry (``tol`` NaN or None: the
+    default)."""
+    xy, ro, po, go = arrays
+    g = len(go) - 1
+    return core.offset_polygons(
+        xy, ro, po, go, _per_geometry(d, g), _per_geometry(math.nan if tol is None else tol, g),
+        DEFAULT_TOLERANCE, approx == "outer", _JOIN_CODE[join], lim, delta, threads,
+    )  # fmt: skip
+
+
+def _per_geometry(v: Any, g: int) -> np.ndarray:
+    """``v`` (one float, or one per geometry) as g float64 values."""
+    if type(v) is float or np.ndim(v) == 0:  # (type first: np.ndim costs a microsecond)
+        return np.array((v,), np.float64) if g == 1 else np.full(g, v, np.float64)
+    return np.ascontiguousarray(v, np.float64)
 
 
 def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: Any) -> None:
@@ -199,31 +252,47 @@ def _raise_for(code: int, status: int, least: float, distance: Any, tolerance: A
         )
 
 
-def _shapes(res: tuple, distance: Any, tolerance: Any) -> list:
+def _raise_all(
+    info: np.ndarray, distance: Any, tolerance: Any, members: np.ndarray | None = None
+) -> None:
+    """The error of the first polygonal set whose offset failed (in order; ``distance``
+    and ``tolerance`` as given, or one per row). ``members``: the rows' positions in a
+    batch, named in the error (``polygon[k]``)."""
+    if (info[0, 0] or info[0, 1]) if len(info) == 1 else info[:, :2].any():
+        for k, (st, cd, least) in enumerate(info[:, :3].tolist()):
+            dk = float(distance[k]) if np.ndim(distance) else distance
+            tk = tolerance[k] if np.ndim(tolerance) else tolerance
+            tk = None if tk is None or tk != tk else (float(tk) if np.ndim(tolerance) else tk)
+            try:
+                _raise_for(int(cd), int(st), least, dk, tk)
+            except GeometryError as exc:
+                if members is None:
+                    raise
+                exc.argument = None  # kept in the message: polygon[k]: tolerance: ...
+                raise exc.renamed(f"polygon[{int(members[k])}]") from None
+
+
+def _shapes(res: tuple, distance: Any, tolerance: Any) -> np.ndarray:
     """Shapely results, one per polygonal set of the call (errors raised in order)."""
     import shapely
 
     xy, ro, po, go, info, _extra = res
-    if info[:, :2].any():
-        for g in range(len(go) - 1):
-            st, cd, least = info[g, :3].tolist()
-            _raise_for(int(cd), int(st), least, distance, tolerance)
+    _raise_all(info, distance, tolerance)
+    polys = shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
     if len(go) == 2 and len(po) == 2:  # one polygon of one ring or more
-        return [shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))[0]]
-    polys = (
-        shapely.from_ragged_array(shapely.GeometryType.POLYGON, xy, (ro, po))
-        if len(po) > 1
-        else np.empty(0, object)
-    )
-    out: list[shapely.Geometry] = []
-    for g in range(len(go) - 1):
-        k0, k1 = int(go[g]), int(go[g + 1])
-        if k1 == k0:
-            out.append(shapely.Polygon())
-        elif k1 == k0 + 1:
-            out.append(polys[k0])
-        else:
-            out.append(shapely.MultiPolygon(list(polys[k0:k1])))
+        return polys
+    counts = np.diff(go)
+    one = counts == 1
+    if one.all():  # one polygon per set
+        return polys
+    out = np.empty(len(go) - 1, dtype=object)
+    out[one] = polys[go[:-1][one]]
+    out[counts == 0] = shapely.Polygon()
+    many = np.flatnonzero(counts > 1)
+    if len(many):
+        members = np.concatenate([polys[go[g] : go[g + 1]] for g in many])
+        which = np.repeat(np.arange(len(many)), counts[many])
+        out[many] = shapely.multipolygons(members, indices=which)
     return out
 
 
@@ -237,35 +306,115 @@ def _list_result(res: list) -> np.ndarray:
     return out
 
 
-def _batch(polys: list, fn_args: tuple) -> list:
-    """Offsets of a list of polygons (None stays None): one compiled call."""
+def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
+    """Offsets of a list of polygons (None stays None): shapely (multi)polygons in one
+    compiled call that reads and checks them; the rest, and what that call leaves to the
+    reader, through the reader (one call per distinct distance and tolerance). Reading
+    errors first, then the offsets' own, each in member order (as if every member went
+    through the reader). ``d``, ``tol`` (and ``distance``, ``tolerance``) are one value
+    for all or one per member."""
     d, tol, approx, join, lim, distance, tolerance = fn_args
+    per = np.ndim(d) or np.ndim(tol)
     idx = [k for k, g in enumerate(polys) if g is not None]
-    inputs = [_read(polys[k], "polygon") for k in idx]
+    fast = np.array([k for k in idx if _fast(polys[k])], np.int64)
+    info = np.zeros((len(polys), 4))
+    res_fast: Any = None
+    if len(fast):
+        geoms = np.empty(len(fast), dtype=object)
+        geoms[:] = [polys[k] for k in fast]
+        res_fast = _run_polygons(
+            polygon_arrays(geoms), _pick(d, fast), _pick(tol, fast), approx, join, lim,
+            _distance_error(distance, d) if not per else 0.0, threads,
+        )  # fmt: skip
+        took = res_fast[4][:, 1] != core.OFFSET_INPUT
+        info[fast[took]] = res_fast[4][took]
+        res_fast, fast = _part(res_fast, took), fast[took]
+    slow = sorted(set(idx) - set(fast.tolist()))
+    inputs = [_read(polys[k], "polygon") for k in slow]  # reading errors, in order
+    groups: dict = {}
+    for k, inp in zip(slow, inputs):
+        tk = _pick(tol, k)
+        key = (float(_pick(d, k)), None if tk is None or tk != tk else float(tk)) if per else None
+        groups.setdefault(key, []).append((k, inp))
+    res_slow = []
+    for key, members in groups.items():
+        dk, tk = key if per else (d, tol)
+        res = _run([inp for _, inp in members], dk, tk, approx, join, lim,
+                   _distance_error(distance, d) if not per else 0.0, threads=threads)  # fmt: skip
+        info[[k for k, _ in members]] = res[4]
+        res_slow.append(([k for k, _ in members], res))
+    _raise_all(info, distance, tolerance, np.arange(len(polys)))  # the offsets' errors
     out: list = [None] * len(polys)
-    if inputs:
-        res = _run(inputs, d, tol, approx, join, lim, _distance_error(distance, d))
-        for k, g in zip(idx, _shapes(res, distance, tolerance)):
-            out[k] = g
+    for ks, res in [(fast.tolist(), res_fast)] + res_slow:
+        if ks and res is not None:
+            for k, g in zip(ks, _shapes(res, distance, tolerance)):
+                out[k] = g
     return out
 
 
-def _map(polygon: Any, fn_args: tuple) -> Any:
-    """Offset one polygon, or each polygon of a container (same kind out)."""
-    if not is_many(polygon, empty=False):
-        return _batch([polygon], fn_args)[0]
+def _pick(v: Any, k: Any) -> Any:
+    """``v[k]`` of a per-member array, or ``v`` itself (one value for all)."""
+    return v[k] if np.ndim(v) else v
+
+
+def _part(res: tuple, keep: np.ndarray) -> tuple:
+    """The results of the geometries ``keep`` selects (a boolean mask over them) with
+    their info rows: those left to the reader have no polygons."""
+    xy, ro, po, go, info, extra = res
+    if keep.all():
+        return res
+    counts = np.diff(go)[keep]
+    return xy, ro, po, np.r_[0, np.cumsum(counts)], info[keep], extra
+
+
+def _all_polygons(polygon: Any) -> np.ndarray | None:
+    """The members of a list, tuple or 1-d object array when every one is a non-empty
+    shapely Polygon or MultiPolygon (as an object array), else None."""
+    import shapely
+
+    if type(polygon) in (list, tuple):
+        arr = np.empty(len(polygon), dtype=object)
+        arr[:] = polygon
+    elif type(polygon) is np.ndarray and polygon.dtype == object and polygon.ndim == 1:
+        arr = polygon
+    else:
+        return None
+    if not len(arr) or not shapely.is_geometry(arr).all():
+        return None
+    ids = shapely.get_type_id(arr)
+    if not ((ids == 3) | (ids == 6)).all() or shapely.is_empty(arr).any():
+        return None
+    return arr
+
+
+def _map(polygon: Any, fn_args: tuple, threads: int = 1, arr: Any = False) -> Any:
+    """Offset each polygon of a container (same kind out; ``arr``: its _all_polygons, when
+    known)."""
     from .._engine.containers import apply, boxed
 
+    if arr is False:
+        arr = _all_polygons(polygon)
+    if arr is not None:  # shapely polygons only: the shortest way, one compiled call
+        d, tol, approx, join, lim, distance, tolerance = fn_args
+        per = np.ndim(d) or np.ndim(tol)
+        got = _run_polygons(polygon_arrays(arr), d, tol, approx, join, lim,
+                            0.0 if per else _distance_error(distance, d), threads)  # fmt: skip
+        if not (got[4][:, 1] == core.OFFSET_INPUT).any():
+            _raise_all(got[4], distance, tolerance, np.arange(len(arr)))
+            out = _shapes(got, distance, tolerance)
+            if type(polygon) is list:
+                return out.tolist()
+            return tuple(out.tolist()) if type(polygon) is tuple else out
     if boxed(polygon):
         # GeoSeries / GeometryArray / object arrays: the shared container rules
         return apply(
-            lambda ps: _list_result(_batch(list(ps), fn_args)),
+            lambda ps: _list_result(_batch(list(ps), fn_args, threads)),
             polygon,
             convex=False,
             names=("polygon",),
         )
     # lists and tuples of polygons (containers went through _engine.containers above)
-    res = _batch(list(polygon), fn_args)
+    res = _batch(list(polygon), fn_args, threads)
     if isinstance(polygon, np.ndarray):
         return _list_result(res)
     return tuple(res) if isinstance(polygon, tuple) else res
@@ -399,11 +548,127 @@ def offset(
     """
     d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
     if not is_many(polygon, empty=False):
-        # one polygon: the shortest way through
-        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim,
-                   _distance_error(distance, d))  # fmt: skip
+        # one polygon: the shortest way through (read and checked by the core itself when
+        # shapely or a float64 ring, else by the reader)
+        extra = _distance_error(distance, d)
+        if _fast(polygon):
+            one: Any = [polygon]  # a list: polygon_arrays reads its one member directly
+            arrays = polygon_arrays(one)
+        elif type(polygon) is np.ndarray and polygon.dtype == _F64 and polygon.shape[1:] == (2,):
+            arrays = _ring_arrays(polygon)
+        else:
+            arrays = None
+        if arrays is not None:
+            res = _run_polygons(arrays, d, tol, approx, join, lim, extra, 1)
+            if res[4][0, 1] != core.OFFSET_INPUT:
+                return _shapes(res, distance, tolerance)[0]
+        res = _run([_read(polygon, "polygon")], d, tol, approx, join, lim, extra)
         return _shapes(res, distance, tolerance)[0]
     return _map(polygon, (d, tol, approx, join, lim, distance, tolerance))
+
+
+def offset_many(
+    polygons: Any,
+    distance: Any,
+    *,
+    tolerance: Any = None,
+    approx: str = "outer",
+    join: str = "round",
+    miter_limit: float = MITER_LIMIT,
+    threads: int = 1,
+) -> Any:
+    """Offset every polygon of a batch: :func:`offset` member by member, in one compiled
+    call.
+
+    Parameters
+    ----------
+    polygons : list, tuple, numpy object array, GeometryArray or GeoSeries
+        Polygons as :func:`offset` takes them (``None`` stays ``None``; in a GeoSeries,
+        GeometryArray or object array an empty member gives an empty Polygon). Shapely
+        polygons and multipolygons are read and checked by the compiled core itself,
+        with the GIL released; other members go through the reader first.
+    distance, tolerance : float or array_like of floats
+        As for :func:`offset`: one value for every member, or one per member (in the
+        container's order; ``tolerance`` None: the default for each).
+    approx, join, miter_limit
+        As for :func:`offset`.
+    threads : int, default 1
+        Worker threads of the compiled call (the GIL is released).
+
+    Returns
+    -------
+    the container's kind
+        A list, tuple or object array of shapely results, or a GeometryArray or GeoSeries
+        (index and CRS kept), each member equal to ``offset(member, distance, ...)``.
+
+    Raises
+    ------
+    GeometryError
+        As :func:`offset`: the first bad member (reading errors first, then the offsets'
+        own), its position or index label in the message.
+
+    Examples
+    --------
+    >>> import minkowski2d as mk, shapely
+    >>> parts = [shapely.box(0, 0, 2, 1), None, shapely.box(0, 0, 1, 1)]
+    >>> out = mk.offset_many(parts, 0.5, tolerance=1e-3, threads=2)
+    >>> out[1] is None, out[0].equals(mk.offset(parts[0], 0.5, tolerance=1e-3))
+    (True, True)
+    """
+    threads = _options.threads(threads)
+    if not is_many(polygons, empty=True):
+        raise ShapeError(
+            "polygons: offset_many takes a list, tuple, array or GeoSeries of polygons",
+            argument="polygons",
+            hint="mk.offset offsets one polygon",
+        )
+    if np.ndim(distance) == 0 and np.ndim(tolerance) == 0:
+        d, tol, lim = _check_options(distance, tolerance, approx, join, miter_limit)
+        return _map(polygons, (d, tol, approx, join, lim, distance, tolerance), threads)
+    # one distance (and tolerance) per member
+    n = len(polygons)
+    ds = _member_values(distance, n, "distance")
+    ts: Any = _member_values(tolerance, n, "tolerance") if np.ndim(tolerance) else tolerance
+    _, _, lim = _check_options(1.0, None if np.ndim(ts) else ts, approx, join, miter_limit)
+    from .._engine.containers import boxed, unbox
+
+    arr = _all_polygons(polygons)
+    box = unbox(polygons) if arr is None and boxed(polygons) else None
+    if box is not None:  # the members apply() computes: not None, not empty
+        import shapely
+
+        geoms = box.geoms
+        valid = ~np.equal(geoms, None) & ~shapely.is_empty(geoms)  # type: ignore[call-overload]
+        ds = ds[valid]
+        ts = ts[valid] if np.ndim(ts) else ts
+    return _map(polygons, (ds, ts, approx, join, lim, ds, ts), threads, arr)
+
+
+def _member_values(value: Any, n: int, name: str) -> np.ndarray:
+    """One float64 value per member (a distance, or a positive tolerance), each exactly
+    the value given."""
+    if isinstance(value, np.ndarray) and value.dtype == np.float64 and value.shape == (n,):
+        ok = np.isfinite(value).all() and (name != "tolerance" or (value > 0).all())
+        if ok:
+            return value.copy()
+    vals = list(value) if not isinstance(value, np.ndarray) else value.tolist()
+    if len(vals) != n:
+        raise ShapeError(
+            f"{name}: {len(vals)} values for {n} polygons", argument=name,
+            hint=f"give one {name} for all, or one per polygon",
+        )  # fmt: skip
+    out = np.empty(n, np.float64)
+    for k, v in enumerate(vals):
+        f = _finite_float(v, name)
+        if name == "tolerance" and f <= 0:
+            raise GeometryError(f"tolerance: must be positive, got {v!r}", argument=name)
+        if not isinstance(v, (float, np.floating)) and Fraction(f) != Fraction(v):
+            raise GeometryError(
+                f"{name}: {v!r} is not a float64 value", argument=name,
+                hint="per-polygon values must be floats",
+            )  # fmt: skip
+        out[k] = f
+    return out
 
 
 def _check_underflow(big: float) -> None:
