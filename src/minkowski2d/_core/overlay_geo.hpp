@@ -266,6 +266,13 @@ class Geo {
     return cross(dy(b.x) - Ax, dy(b.y) - Ay, X - Ax * W, Y - Ay * W).sign();
   }
 
+  // lines l1 and l2 are one line (exact)
+  bool same_line(i64 l1, i64 l2) const {
+    if (l1 == l2) return true;
+    const P &a = pts[lines[l1].a], &b = pts[lines[l1].b];
+    return orient(a, b, pts[lines[l2].a]) == 0 && orient(a, b, pts[lines[l2].b]) == 0;
+  }
+
   // turn from line l1's direction to line l2's (each a -> b, times its sign)
   int turn(i64 l1, int s1, i64 l2, int s2) const {
     const Line &L1 = lines[l1], &L2 = lines[l2];

@@ -298,13 +298,20 @@ class Overlay {
     }
   }
 
-  // certainly the same point without arithmetic: the same id, or crossings of the same
-  // two lines (false: not known)
+  // certainly the same point without the crossings' coordinates: the same id, crossings
+  // of the same two lines, or crossings of one line with two lines that are one line (two
+  // exact orientations: the edges of piece sums are often collinear, and a line crossing
+  // two of them meets both in one point) (false: not known)
   bool same_vertex(i64 a, i64 b) const {
     if (a == b) return true;
     const Vert &A = g_.verts[a], &B = g_.verts[b];
     if (A.p >= 0 || B.p >= 0) return false;
-    return (A.l1 == B.l1 && A.l2 == B.l2) || (A.l1 == B.l2 && A.l2 == B.l1);
+    if ((A.l1 == B.l1 && A.l2 == B.l2) || (A.l1 == B.l2 && A.l2 == B.l1)) return true;
+    // the other lines, when one is common
+    const i64 m = A.l1 == B.l1 || A.l1 == B.l2 ? A.l2 : (A.l2 == B.l1 || A.l2 == B.l2 ? A.l1 : -1);
+    if (m < 0) return false;
+    const i64 n = B.l1 == A.l1 || B.l1 == A.l2 ? B.l2 : B.l1;
+    return g_.same_line(m, n);
   }
   // along(line, a, b) with that shortcut
   int along_s(i64 line, i64 a, i64 b) const {

@@ -52,6 +52,9 @@ inline std::size_t first_false(std::size_t n, std::size_t g, Pred&& p) {
   return lo;
 }
 
+// a status of at most this many pieces is scanned for the pieces that end at a vertex
+constexpr std::size_t kSmallStatus = 64;
+
 template <class F>
 inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>& start,
                            F&& at_vertex) {
@@ -71,13 +74,20 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>&
       return e.r != v && side(e, v) > 0;  // v is on the pieces that end at v
     };
     // the first piece not below v: its chunk c, then its place o in it, each searched
-    // from the place of the last vertex (consecutive vertices are often close)
+    // from the place of the last vertex (consecutive vertices are often close); in a
+    // small status, the first of the pieces that end at v when there are any (no side
+    // test: a piece below v does not end there)
     const std::size_t nc = st.size();
-    std::size_t c = first_false(nc, fc, [&](std::size_t k) { return below(ch[k].back()); });
-    std::size_t o = 0;
-    if (c < nc)
-      o = first_false(ch[c].size(), c == fc ? fo : 0,
-                      [&](std::size_t k) { return below(ch[c][k]); });
+    std::size_t c = 0, o = 0;
+    if (nend > 0 && nc == 1 && ch[0].size() <= kSmallStatus) {
+      const std::vector<i64>& cur = ch[0];
+      while (ps[cur[o]].r != v) ++o;
+    } else {
+      c = first_false(nc, fc, [&](std::size_t k) { return below(ch[k].back()); });
+      if (c < nc)
+        o = first_false(ch[c].size(), c == fc ? fo : 0,
+                        [&](std::size_t k) { return below(ch[c][k]); });
+    }
     // the nend pieces from there end at v: removed (they may span chunks)
     for (i64 k = nend; k > 0;) {
 #ifdef MK_OVERLAY_CHECK
