@@ -113,16 +113,25 @@ class Geo {
   std::vector<Line> lines;
   std::vector<Vert> verts;
 
+  // (the fields are written in place: a temporary copied in stalls on its own stores)
   i64 point(DD x, DD y) {
-    pts.push_back(P{x, y});
+    P& q = pts.emplace_back();
+    q.x = x;
+    q.y = y;
     return (i64)pts.size() - 1;
   }
   i64 line(i64 a, i64 b) {
-    lines.push_back(Line{a, b});
+    Line& L = lines.emplace_back();
+    L.a = a;
+    L.b = b;
     return (i64)lines.size() - 1;
   }
   i64 vert_point(i64 p) {
-    verts.push_back(Vert{p, -1, -1, fe(pts[p].x), fe(pts[p].y)});
+    Vert& V = verts.emplace_back();
+    V.p = p;
+    V.l1 = V.l2 = -1;
+    V.x = fe(pts[p].x);
+    V.y = fe(pts[p].y);
     return (i64)verts.size() - 1;
   }
   i64 vert_cross(i64 l1, i64 l2) {

@@ -288,8 +288,12 @@ inline void add_ring(Geo& g, i64 first, i64 n, int w, int layer, std::vector<Edg
   for (i64 i = 0; i < n; ++i) {
     i64 a = first + i, b = first + (i + 1) % n;
     if (p_eq(g.pts[a], g.pts[b])) continue;
-    i64 l = g.line(a, b);
-    out.push_back(EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, layer});
+    EdgeIn& e = out.emplace_back();
+    e.line = g.line(a, b);
+    e.v0 = v0 + i;
+    e.v1 = v0 + (i + 1) % n;
+    e.w = w;
+    e.layer = layer;
   }
 }
 
