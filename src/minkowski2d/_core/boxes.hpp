@@ -110,6 +110,7 @@ struct BoxScratch {
     int g;
   };
   std::vector<Box> sorted;
+  std::vector<i64> hits;
 };
 
 // box_pairs_grouped for few boxes: sorted by the lower side along one axis, each box scans
@@ -158,12 +159,22 @@ inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const 
     for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
     std::sort(b.begin(), b.end(), less);
   }
+  // the boxes that overlap b[t] further on, gathered without branches (most fail the
+  // test: a branch on it is mispredicted often), then reported in order
+  auto& hit = s.hits;
   for (i64 t = 0; t < n; ++t) {
     const BoxScratch::Box a = b[t];
-    for (i64 u = t + 1; u < n && b[u].x0 <= a.x1; ++u) {
+    i64 u = t + 1, end = u;
+    while (end < n && b[end].x0 <= a.x1) ++end;
+    if ((i64)hit.size() < end - u) hit.resize(end - u);
+    i64 k = 0;
+    for (; u < end; ++u) {
       const BoxScratch::Box& c = b[u];
-      if (c.y0 > a.y1 || a.y0 > c.y1) continue;
-      if (a.g >= 0 && c.g == a.g) continue;
+      hit[k] = u;
+      k += (c.y0 <= a.y1) & (a.y0 <= c.y1) & ((a.g < 0) | (c.g != a.g));
+    }
+    for (i64 q = 0; q < k; ++q) {
+      const BoxScratch::Box& c = b[hit[q]];
       const i64 i = a.i < c.i ? a.i : c.i, j = a.i < c.i ? c.i : a.i;
       if constexpr (std::is_same_v<decltype(on_pair(i, j)), bool>) {
         if (!on_pair(i, j)) return false;
