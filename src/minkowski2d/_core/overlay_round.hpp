@@ -21,6 +21,20 @@ namespace ov {
 // kept: the output is the rounded exact vertices, no more and no fewer (an exactly
 // collinear *exact* vertex never reaches it).
 inline void clean_rounded(Rings& r) {
+  // nothing to drop (no neighbours rounded together): the rings stand as they are (they
+  // start at their smallest vertex already, assemble)
+  bool repeats = false;
+  for (std::size_t k = 0; k + 1 < r.ring_off.size() && !repeats; ++k) {
+    const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1];
+    for (i64 i = r0; i < r1; ++i) {
+      const i64 j = i + 1 < r1 ? i + 1 : r0;
+      if (r1 - r0 > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) {
+        repeats = true;
+        break;
+      }
+    }
+  }
+  if (!repeats) return;
   Rings out;
   out.status = r.status;
   out.exact_vertices = r.exact_vertices;
@@ -123,6 +137,10 @@ inline bool valid_rounded(const Rings& r) {
     if (!ok) return false;
     const i64 a = e, b = nxt(e), c = f, d = nxt(f);
     const bool one_ring = ring_of[e] == ring_of[f];
+    // consecutive edges of a ring meet at their common vertex; only a collinear pair
+    // (turning back) needs the tests below
+    if (b == c && orient(a, b, d) != 0) return true;
+    if (d == a && orient(c, d, b) != 0) return true;
     int o1 = orient(a, b, c), o2 = orient(a, b, d);
     if (o1 * o2 > 0) return true;
     int o3 = orient(c, d, a), o4 = orient(c, d, b);

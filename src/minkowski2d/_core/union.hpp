@@ -416,6 +416,11 @@ struct Workspace {
   static constexpr std::size_t KEEP = std::size_t(1) << 18;
   Geo g;
   ConvexUnion u{g};
+  // union_rings' normalized rings
+  std::vector<i64> keep, idx, po;
+  std::vector<std::int8_t> turn;
+  std::vector<P> pts;
+  std::vector<char> convex;
   void clear() {
     g.pts.clear();
     g.lines.clear();
@@ -625,48 +630,53 @@ inline std::vector<ov::P> general_ring(const double* xy, i64 lo, i64 hi) {
 inline void union_rings(const double* xy, const i64* off, i64 np, bool cull, i64 max_crossings,
                         i64 max_pairs, ov::Rings& out, UnionStats& st, i64& bad_poly,
                         i64& bad_vertex) {
-  i64 big = 1;
-  for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
-  std::vector<i64> keep(big), idx(big);
-  std::vector<std::int8_t> turn(big);
-  std::vector<ov::P> pts;
-  std::vector<i64> po{0};
-  std::vector<char> convex;
-  pts.reserve((std::size_t)off[np]);
-  for (i64 k = 0; k < np && out.status == OK; ++k) {
-    Norm N = normalize(xy, off[k], off[k + 1], keep.data(), turn.data(), idx.data());
-    if (N.code == NONFINITE || N.code == RANGE) {
-      out.status = N.code;
-      bad_poly = k;
-      bad_vertex = N.vertex;
-      break;
-    }
-    if (N.code == OK) {
-      if (N.k < 3) continue;  // a point or a segment: no area
-      for (i64 t = 0; t < N.k; ++t) {
-        i64 i = N.at(t);
-        pts.push_back(ov::P{ov::dd(xy[2 * i]), ov::dd(xy[2 * i + 1])});
+  with_workspace([&](Workspace& w) {
+    i64 big = 1;
+    for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
+    w.keep.resize(big);
+    w.idx.resize(big);
+    w.turn.resize(big);
+    std::vector<ov::P>& pts = w.pts;
+    std::vector<i64>& po = w.po;
+    pts.clear();
+    po.assign(1, 0);
+    w.convex.clear();
+    pts.reserve((std::size_t)off[np]);
+    for (i64 k = 0; k < np && out.status == OK; ++k) {
+      Norm N = normalize(xy, off[k], off[k + 1], w.keep.data(), w.turn.data(), w.idx.data());
+      if (N.code == NONFINITE || N.code == RANGE) {
+        out.status = N.code;
+        bad_poly = k;
+        bad_vertex = N.vertex;
+        break;
       }
-      convex.push_back(1);
-    } else {
-      std::vector<ov::P> r = general_ring(xy, off[k], off[k + 1]);
-      if (r.empty()) continue;
-      pts.insert(pts.end(), r.begin(), r.end());
-      convex.push_back(0);
+      if (N.code == OK) {
+        if (N.k < 3) continue;  // a point or a segment: no area
+        for (i64 t = 0; t < N.k; ++t) {
+          i64 i = N.at(t);
+          ov::P& q = pts.emplace_back();
+          q.x = ov::dd(xy[2 * i]);
+          q.y = ov::dd(xy[2 * i + 1]);
+        }
+        w.convex.push_back(1);
+      } else {
+        std::vector<ov::P> r = general_ring(xy, off[k], off[k + 1]);
+        if (r.empty()) continue;
+        pts.insert(pts.end(), r.begin(), r.end());
+        w.convex.push_back(0);
+      }
+      po.push_back((i64)pts.size());
     }
-    po.push_back((i64)pts.size());
-  }
-  if (out.status == OK) {
-    PointSource src{&pts, &po, &convex};
-    with_workspace([&](Workspace& w) {
+    if (out.status == OK) {
+      PointSource src{&pts, &po, &w.convex};
       w.u.cull = cull;
       w.u.max_crossings = max_crossings;
       w.u.max_pairs = max_pairs;
       w.u.unite(src, out);
       st = w.u.st;
-      return 0;
-    });
-  }
+    }
+    return 0;
+  });
 }
 
 }  // namespace un
