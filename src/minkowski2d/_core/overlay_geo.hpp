@@ -142,6 +142,15 @@ class Geo {
     FE t = fe_div(N, D);
     v.x = fe(a.x) + (fe(b.x) - fe(a.x)) * t;
     v.y = fe(a.y) + (fe(b.y) - fe(a.y)) * t;
+    if (!(v.x.e <= 1e308 && v.y.e <= 1e308)) {
+      // nearly parallel lines: the same in extended precision (else every comparison
+      // with this vertex would redo that, and sorts place it by a meaningless value)
+      FEL Nl, Dl;
+      cross_nd<FEL>(l1, l2, Nl, Dl, &cfel);
+      FEL tl = fe_div(Nl, Dl);
+      v.x = fe_of(cfel(a.x) + (cfel(b.x) - cfel(a.x)) * tl);
+      v.y = fe_of(cfel(a.y) + (cfel(b.y) - cfel(a.y)) * tl);
+    }
     // an unbounded (or NaN) bound: no information, every decision goes exact
     if (!(v.x.e <= 1e308) || !(v.x.v - v.x.v == 0)) v.x = FE{0, INFINITY};
     if (!(v.y.e <= 1e308) || !(v.y.v - v.y.v == 0)) v.y = FE{0, INFINITY};
@@ -216,6 +225,13 @@ class Geo {
     return axis == 0 ? (Xa * Wb - Xb * Wa).sign() : (Ya * Wb - Yb * Wa).sign();
   }
 
+  // an extended-precision value as a double with a certified bound (the distance to
+  // the double, exact in long double, added; the bound rounded upwards); never exact
+  static FE fe_of(FEL a) {
+    const double v = (double)a.v;
+    const long double d = std::fabs(a.v - (long double)v);
+    return FE{v, next_up((double)((a.e + d) * FEconst<long double>::SAFE))};
+  }
   // extended-precision value of a DD with a certified bound
   static FEL cfel(DD u) {
     long double s = (long double)u.hi + (long double)u.lo;
