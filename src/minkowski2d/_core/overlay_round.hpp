@@ -304,12 +304,12 @@ inline void add_ring(Geo& g, i64 first, i64 n, int w, int layer, std::vector<Edg
   i64 v0 = (i64)g.verts.size();
   for (i64 i = 0; i < n; ++i) g.vert_point(first + i);
   for (i64 i = 0; i < n; ++i) {
-    i64 a = first + i, b = first + (i + 1) % n;
+    const i64 j = i + 1 < n ? i + 1 : 0, a = first + i, b = first + j;
     if (p_eq(g.pts[a], g.pts[b])) continue;
     EdgeIn& e = out.emplace_back();
     e.line = g.line(a, b);
     e.v0 = v0 + i;
-    e.v1 = v0 + (i + 1) % n;
+    e.v1 = v0 + j;
     e.w = w;
     e.layer = layer;
   }
