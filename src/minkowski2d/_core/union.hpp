@@ -143,6 +143,15 @@ class ConvexUnion {
       std::sort(key.begin(), key.end());
       for (auto& kk : key) order.push_back(kk.second);
     }
+    // one convex piece of plain doubles: the union is the piece, as the overlay gives it
+    // (counter-clockwise from its smallest vertex, x then y; tests/test_union_core.py)
+    if (order.size() == 1 && src.convex(order[0])) {
+      src.get(order[0], v_, pv, m);
+      if (one_piece(pv, m, out)) {
+        st.kept = 1;
+        return out.status;
+      }
+    }
     // 2. rounds
     ubnd_.clear();
     uverts_.clear();
@@ -207,6 +216,24 @@ class ConvexUnion {
   std::vector<std::pair<u64, i64>> hk_;
   std::vector<i64> order_, ord_;
   std::deque<Level> levels_;  // (references stay valid as it grows)
+
+  static bool one_piece(const P* p, i64 m, Rings& out) {
+    i64 s = 0;
+    for (i64 i = 0; i < m; ++i) {
+      if (!ov::plain(p[i])) return false;
+      if (p[i].x.hi < p[s].x.hi || (p[i].x.hi == p[s].x.hi && p[i].y.hi < p[s].y.hi)) s = i;
+    }
+    out.clear();
+    for (i64 i = 0; i < m; ++i) {
+      const P& q = p[s + i < m ? s + i : s + i - m];
+      out.xy.push_back(q.x.hi);
+      out.xy.push_back(q.y.hi);
+    }
+    out.ring_off.push_back(m);
+    out.poly_off.push_back(1);
+    out.exact_vertices = true;
+    return true;
+  }
 
   Level& level(std::size_t d) {
     if (levels_.size() <= d) levels_.resize(d + 1);

@@ -127,6 +127,17 @@ class BoundaryIndex {
       Y1_ = std::max(Y1_, by1_[i]);
     }
     if (!(X1_ - X0_ < INFINITY) || !(Y1_ - Y0_ < INFINITY)) return;  // unbounded: no index
+    // the grid when a test first needs it (the pieces tested before the next round may
+    // all fall outside the box)
+    grid_ready_ = false;
+    built_ = true;
+  }
+
+ private:
+  // the grid over the edges, its cells and its empty components
+  void grid() {
+    grid_ready_ = true;
+    const i64 n = (i64)e_->size();
     // about two cells per edge, square-ish
     double W = X1_ - X0_, H = Y1_ - Y0_;
     double target = std::max(1.0, 2.0 * (double)n);
@@ -166,9 +177,9 @@ class BoundaryIndex {
     stamp_.assign(n, 0);
     epoch_ = 0;
     components();
-    built_ = true;
   }
 
+ public:
   // Is the convex piece p[0..m) (strictly convex, counter-clockwise, m >= 3) inside the
   // union (closed)? true only when proved; false means "keep it".
   bool covers(const P* p, i64 m) {
@@ -186,6 +197,7 @@ class BoundaryIndex {
       ++n_box;
       return false;
     }
+    if (!grid_ready_) grid();
     M = std::max(std::max(std::fabs(px0), std::fabs(px1)), std::max(std::fabs(py0), std::fabs(py1)));
     // the spans below are in double: widened by far more than their rounding errors
     // (a few ulps of M) and the DD parts (half an ulp), see span_slack
@@ -274,7 +286,7 @@ class BoundaryIndex {
  private:
   const Geo& g_;
   const std::vector<BEdge>* e_ = nullptr;
-  bool built_ = false;
+  bool built_ = false, grid_ready_ = false;
   std::vector<double> bx0_, bx1_, by0_, by1_;
   double X0_ = 0, X1_ = 0, Y0_ = 0, Y1_ = 0;
   Axis xs_, ys_;
