@@ -692,10 +692,14 @@ class Overlay {
     for (i64 v = 0; v < m; ++v) {
       const i64 a = pstart_[v], b = pstart_[v + 1];
       pstart_[v] = (i64)pcs_.size();
-      if (b - a > 1)
-        std::sort(raw_.begin() + a, raw_.begin() + b, [](const RawP& x, const RawP& y) {
-          return x.r < y.r || (x.r == y.r && x.src < y.src);
-        });
+      auto raw_less = [](const RawP& x, const RawP& y) {
+        return x.r < y.r || (x.r == y.r && x.src < y.src);
+      };
+      if (b - a == 2) {  // the common case, without a call
+        if (raw_less(raw_[a + 1], raw_[a])) std::swap(raw_[a], raw_[a + 1]);
+      } else if (b - a > 2) {
+        std::sort(raw_.begin() + a, raw_.begin() + b, raw_less);
+      }
       for (i64 q = a; q < b;) {
         const i32 r = raw_[q].r;
         i32 c0 = 0, c1 = 0, n0 = 0, nl = 0;
@@ -731,9 +735,12 @@ class Overlay {
         q = q1;
       }
       const i64 p0 = pstart_[v], p1 = (i64)pcs_.size();
-      if (p1 - p0 > 1)
+      if (p1 - p0 == 2) {
+        if (slope_below(pcs_[p0 + 1], pcs_[p0])) std::swap(pcs_[p0], pcs_[p0 + 1]);
+      } else if (p1 - p0 > 2) {
         std::sort(pcs_.begin() + p0, pcs_.begin() + p1,
                   [&](const Piece& x, const Piece& y) { return slope_below(x, y); });
+      }
     }
     pstart_[m] = (i64)pcs_.size();
     n_edges = (i64)pcs_.size();
