@@ -133,14 +133,12 @@ inline bool valid_rounded(const Rings& r) {
   }
   bool ok = true;
   // the check of one candidate pair; false (and ok = false) at the first violation
+  // (consecutive edges of a ring that do not turn back: one orientation)
   auto check = [&](i64 e, i64 f) -> bool {
     if (!ok) return false;
     const i64 a = e, b = nxt(e), c = f, d = nxt(f);
     const bool one_ring = ring_of[e] == ring_of[f];
-    // consecutive edges of a ring meet at their common vertex; only a collinear pair
-    // (turning back) needs the tests below
-    if (b == c && orient(a, b, d) != 0) return true;
-    if (d == a && orient(c, d, b) != 0) return true;
+    if ((b == c && orient(a, b, d) != 0) || (d == a && orient(c, d, b) != 0)) return true;
     int o1 = orient(a, b, c), o2 = orient(a, b, d);
     if (o1 * o2 > 0) return true;
     int o3 = orient(c, d, a), o4 = orient(c, d, b);
@@ -159,10 +157,7 @@ inline bool valid_rounded(const Rings& r) {
       ok = false;
       return false;
     }
-    if (o1 && o2 && o3 && o4) {  // a proper crossing
-      ok = false;
-      return false;
-    }
+    if (o1 && o2 && o3 && o4) return ok = false;  // a proper crossing
     // one common point
     if (one_ring && (b == c || d == a)) return true;  // consecutive edges at their vertex
     if (one_ring) {
