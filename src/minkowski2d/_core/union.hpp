@@ -35,9 +35,11 @@
 //           a neighbourhood of that vertex lies in int(U) and meets int(P); int(P) is
 //           connected and misses dU by (a), so int(P), hence P, lies in U.
 //     Anything else keeps the piece: keeping is always correct, dropping is proved.
+//     The grid is built when a test first needs it.
 //  4. Sources make the pieces on demand (SumSource merges two convex pieces), so the
-//     1.6 M sums of the stars never exist at once; only kept pieces enter the geometry.
-//     One thread's geometry and buffers are reused between calls (Workspace).
+//     1.7 M sums of the stars never exist at once; only kept pieces enter the geometry.
+//     One thread's geometry and buffers are reused between calls (Workspace). One convex
+//     piece of plain doubles is its own union (the overlay's arrays, without a run).
 //  5. Work limits. max_crossings bounds the crossings noded by all overlay runs together
 //     (each is a new vertex: the memory), max_pairs the candidate pairs classified (the
 //     time): beyond either the result is Status RESOURCE and no rings (the caller raises
