@@ -25,6 +25,7 @@ from hypothesis import strategies as st
 
 import minkowski2d as mk
 from minkowski2d._core import _ext
+from tests.corpus import ESICUP
 from tests.overlay_oracle import boundary, exact_area, ulps
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
@@ -203,6 +204,54 @@ def test_many_pieces_cull_on_off_and_flat_agree(polys, e):
     assert on[3] == off[3] == 0
     assert same(on[:3], off[:3])
     assert same(on[:3], flat(polys))
+
+
+@pytest.mark.parametrize("reverse", [False, True])
+@pytest.mark.parametrize("start", [0, 2, 5])
+def test_one_piece_is_what_the_overlay_gives(start, reverse):
+    # one convex piece is its own union (no overlay run): the overlay's arrays, for a
+    # piece given from any start, in either orientation, with a repeated and a collinear
+    # vertex (dyadic coordinates: the midpoint is exact)
+    hexagon = [(0.5, -1.25), (3.75, -0.5), (4.5, 1.75), (3.0, 3.5), (0.25, 2.75), (-0.5, 0.5)]
+    p = hexagon[start:] + hexagon[:start]
+    if reverse:
+        p.reverse()
+    given_ = [p[0], p[0], ((p[0][0] + p[1][0]) / 2, (p[0][1] + p[1][1]) / 2), *p[1:]]
+    ours = union([given_])
+    assert ours[3] == 0 and ours[4][:3] == (1, 0, 1) and ours[4][4] == 0  # no run
+    assert same(ours[:3], flat([hexagon]))
+    assert same(ours[:3], union([given_, [(0, 0), (0, 0), (1, 1)]])[:3])  # with a segment
+
+
+def _esicup_piece_sums(name: str, k: int):
+    """``k`` seeded NFPs of an ESICUP instance, parts turned by free angles (as
+    benchmarks/bench_union.py): each the convex piece sums of A and -B, as rings."""
+    from bench_nfp_free import free_angles, rotated_rings
+
+    parts = mk.read_esicup(ESICUP / f"{name}.json")["parts"]
+    angles = free_angles(name, 2, 16)
+    rings = rotated_rings(parts, angles)
+    rng = np.random.default_rng([5, *map(ord, name)])
+    out = []
+    for _ in range(k):
+        i, j = rng.integers(0, len(parts), 2)
+        a, b = rng.choice(angles, 2)
+        la = mk.convex_decomposition(rings[(i, a)]).to_list()
+        lb = mk.convex_decomposition(mk.reflect(rings[(j, b)])).to_list()
+        sums = mk.minkowski_sum_many([p for p in la for _ in lb], [q for _ in la for q in lb])
+        out.append(sums.to_list())
+    return out
+
+
+@pytest.mark.parametrize("name", ["swim", "shapes0", "albano"])
+def test_nfp_piece_sums_cull_on_off_and_flat_agree(name):
+    # the benchmark's input kind: rounded convex sums sharing vertices and collinear
+    # edges, many inside others (swim: tens of pieces, several rounds)
+    for sums in _esicup_piece_sums(name, 3):
+        on = union(sums)
+        assert on[3] == 0
+        assert same(on[:3], union(sums, cull=False)[:3])
+        assert same(on[:3], flat(sums))
 
 
 def test_pieces_inside_a_large_one_are_culled():

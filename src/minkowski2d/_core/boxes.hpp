@@ -110,6 +110,7 @@ struct BoxScratch {
     int g;
   };
   std::vector<Box> sorted;
+  std::vector<i64> hits;
 };
 
 // box_pairs_grouped for few boxes: sorted by the lower side along one axis, each box scans
@@ -117,7 +118,8 @@ struct BoxScratch {
 // axis is box_pairs' (the thinner one relative to the spread: shorter scans).
 template <class F>
 inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const double* ymin,
-                           const double* ymax, const int* group, BoxScratch& s, F&& on_pair) {
+                           const double* ymax, const int* group, BoxScratch& s, F&& on_pair,
+                           const i64* x_hint = nullptr) {
   auto& b = s.sorted;
   b.resize(n);
   double wx = 0, wy = 0, X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
@@ -129,20 +131,50 @@ inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const 
     Y0 = std::min(Y0, ymin[i]);
     Y1 = std::max(Y1, ymax[i]);
   }
-  const bool use_y = (wy / (Y1 - Y0)) < (wx / (X1 - X0));  // false for NaN
-  if (use_y)  // the same scan with the axes swapped
-    for (i64 i = 0; i < n; ++i) b[i] = {ymin[i], ymax[i], xmin[i], xmax[i], i, group[i]};
-  else
-    for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
-  std::sort(b.begin(), b.end(), [](const BoxScratch::Box& p, const BoxScratch::Box& q) {
+  const bool use_y = (wy / (Y1 - Y0)) < (x_hint ? 0.5 : 1.0) * (wx / (X1 - X0));  // false for NaN
+  auto less = [](const BoxScratch::Box& p, const BoxScratch::Box& q) {
     return p.x0 < q.x0 || (p.x0 == q.x0 && p.i < q.i);
-  });
+  };
+  if (use_y) {  // the same scan with the axes swapped
+    for (i64 i = 0; i < n; ++i) b[i] = {ymin[i], ymax[i], xmin[i], xmax[i], i, group[i]};
+    std::sort(b.begin(), b.end(), less);
+  } else if (x_hint) {
+    // an order close to the sorted one: repaired by insertion (the same order as the
+    // sort, which is unique), or sorted when far from it
+    for (i64 t = 0; t < n; ++t) {
+      const i64 i = x_hint[t];
+      b[t] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
+    }
+    i64 moves = 0;
+    for (i64 t = 1; t < n && moves <= n; ++t) {
+      if (!less(b[t], b[t - 1])) continue;
+      const BoxScratch::Box x = b[t];
+      i64 q = t;
+      for (; q > 0 && less(x, b[q - 1]); --q) b[q] = b[q - 1];
+      b[q] = x;
+      moves += t - q;
+    }
+    if (moves > n) std::sort(b.begin(), b.end(), less);
+  } else {
+    for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
+    std::sort(b.begin(), b.end(), less);
+  }
+  // the boxes that overlap b[t] further on, gathered without branches (most fail the
+  // test: a branch on it is mispredicted often), then reported in order
+  auto& hit = s.hits;
   for (i64 t = 0; t < n; ++t) {
     const BoxScratch::Box a = b[t];
-    for (i64 u = t + 1; u < n && b[u].x0 <= a.x1; ++u) {
+    i64 u = t + 1, end = u;
+    while (end < n && b[end].x0 <= a.x1) ++end;
+    if ((i64)hit.size() < end - u) hit.resize(end - u);
+    i64 k = 0;
+    for (; u < end; ++u) {
       const BoxScratch::Box& c = b[u];
-      if (c.y0 > a.y1 || a.y0 > c.y1) continue;
-      if (a.g >= 0 && c.g == a.g) continue;
+      hit[k] = u;
+      k += (c.y0 <= a.y1) & (a.y0 <= c.y1) & ((a.g < 0) | (c.g != a.g));
+    }
+    for (i64 q = 0; q < k; ++q) {
+      const BoxScratch::Box& c = b[hit[q]];
       const i64 i = a.i < c.i ? a.i : c.i, j = a.i < c.i ? c.i : a.i;
       if constexpr (std::is_same_v<decltype(on_pair(i, j)), bool>) {
         if (!on_pair(i, j)) return false;

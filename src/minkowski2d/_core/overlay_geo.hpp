@@ -113,16 +113,25 @@ class Geo {
   std::vector<Line> lines;
   std::vector<Vert> verts;
 
+  // (the fields are written in place: a temporary copied in stalls on its own stores)
   i64 point(DD x, DD y) {
-    pts.push_back(P{x, y});
+    P& q = pts.emplace_back();
+    q.x = x;
+    q.y = y;
     return (i64)pts.size() - 1;
   }
   i64 line(i64 a, i64 b) {
-    lines.push_back(Line{a, b});
+    Line& L = lines.emplace_back();
+    L.a = a;
+    L.b = b;
     return (i64)lines.size() - 1;
   }
   i64 vert_point(i64 p) {
-    verts.push_back(Vert{p, -1, -1, fe(pts[p].x), fe(pts[p].y)});
+    Vert& V = verts.emplace_back();
+    V.p = p;
+    V.l1 = V.l2 = -1;
+    V.x = fe(pts[p].x);
+    V.y = fe(pts[p].y);
     return (i64)verts.size() - 1;
   }
   i64 vert_cross(i64 l1, i64 l2) {
@@ -133,6 +142,15 @@ class Geo {
     FE t = fe_div(N, D);
     v.x = fe(a.x) + (fe(b.x) - fe(a.x)) * t;
     v.y = fe(a.y) + (fe(b.y) - fe(a.y)) * t;
+    if (!(v.x.e <= 1e308 && v.y.e <= 1e308)) {
+      // nearly parallel lines: the same in extended precision (else every comparison
+      // with this vertex would redo that, and sorts place it by a meaningless value)
+      FEL Nl, Dl;
+      cross_nd<FEL>(l1, l2, Nl, Dl, &cfel);
+      FEL tl = fe_div(Nl, Dl);
+      v.x = fe_of(cfel(a.x) + (cfel(b.x) - cfel(a.x)) * tl);
+      v.y = fe_of(cfel(a.y) + (cfel(b.y) - cfel(a.y)) * tl);
+    }
     // an unbounded (or NaN) bound: no information, every decision goes exact
     if (!(v.x.e <= 1e308) || !(v.x.v - v.x.v == 0)) v.x = FE{0, INFINITY};
     if (!(v.y.e <= 1e308) || !(v.y.v - v.y.v == 0)) v.y = FE{0, INFINITY};
@@ -207,6 +225,13 @@ class Geo {
     return axis == 0 ? (Xa * Wb - Xb * Wa).sign() : (Ya * Wb - Yb * Wa).sign();
   }
 
+  // an extended-precision value as a double with a certified bound (the distance to
+  // the double, exact in long double, added; the bound rounded upwards); never exact
+  static FE fe_of(FEL a) {
+    const double v = (double)a.v;
+    const long double d = std::fabs(a.v - (long double)v);
+    return FE{v, next_up((double)((a.e + d) * FEconst<long double>::SAFE))};
+  }
   // extended-precision value of a DD with a certified bound
   static FEL cfel(DD u) {
     long double s = (long double)u.hi + (long double)u.lo;
@@ -264,6 +289,13 @@ class Geo {
     exact(v, X, Y, W);
     Dy Ax = dy(a.x), Ay = dy(a.y);
     return cross(dy(b.x) - Ax, dy(b.y) - Ay, X - Ax * W, Y - Ay * W).sign();
+  }
+
+  // lines l1 and l2 are one line (exact)
+  bool same_line(i64 l1, i64 l2) const {
+    if (l1 == l2) return true;
+    const P &a = pts[lines[l1].a], &b = pts[lines[l1].b];
+    return orient(a, b, pts[lines[l2].a]) == 0 && orient(a, b, pts[lines[l2].b]) == 0;
   }
 
   // turn from line l1's direction to line l2's (each a -> b, times its sign)

@@ -21,6 +21,20 @@ namespace ov {
 // kept: the output is the rounded exact vertices, no more and no fewer (an exactly
 // collinear *exact* vertex never reaches it).
 inline void clean_rounded(Rings& r) {
+  // nothing to drop (no neighbours rounded together): the rings stand as they are (they
+  // start at their smallest vertex already, assemble)
+  bool repeats = false;
+  for (std::size_t k = 0; k + 1 < r.ring_off.size() && !repeats; ++k) {
+    const i64 r0 = r.ring_off[k], r1 = r.ring_off[k + 1];
+    for (i64 i = r0; i < r1; ++i) {
+      const i64 j = i + 1 < r1 ? i + 1 : r0;
+      if (r1 - r0 > 1 && r.xy[2 * i] == r.xy[2 * j] && r.xy[2 * i + 1] == r.xy[2 * j + 1]) {
+        repeats = true;
+        break;
+      }
+    }
+  }
+  if (!repeats) return;
   Rings out;
   out.status = r.status;
   out.exact_vertices = r.exact_vertices;
@@ -119,10 +133,12 @@ inline bool valid_rounded(const Rings& r) {
   }
   bool ok = true;
   // the check of one candidate pair; false (and ok = false) at the first violation
+  // (consecutive edges of a ring that do not turn back: one orientation)
   auto check = [&](i64 e, i64 f) -> bool {
     if (!ok) return false;
     const i64 a = e, b = nxt(e), c = f, d = nxt(f);
     const bool one_ring = ring_of[e] == ring_of[f];
+    if ((b == c && orient(a, b, d) != 0) || (d == a && orient(c, d, b) != 0)) return true;
     int o1 = orient(a, b, c), o2 = orient(a, b, d);
     if (o1 * o2 > 0) return true;
     int o3 = orient(c, d, a), o4 = orient(c, d, b);
@@ -141,10 +157,7 @@ inline bool valid_rounded(const Rings& r) {
       ok = false;
       return false;
     }
-    if (o1 && o2 && o3 && o4) {  // a proper crossing
-      ok = false;
-      return false;
-    }
+    if (o1 && o2 && o3 && o4) return ok = false;  // a proper crossing
     // one common point
     if (one_ring && (b == c || d == a)) return true;  // consecutive edges at their vertex
     if (one_ring) {
@@ -286,10 +299,14 @@ inline void add_ring(Geo& g, i64 first, i64 n, int w, int layer, std::vector<Edg
   i64 v0 = (i64)g.verts.size();
   for (i64 i = 0; i < n; ++i) g.vert_point(first + i);
   for (i64 i = 0; i < n; ++i) {
-    i64 a = first + i, b = first + (i + 1) % n;
+    const i64 j = i + 1 < n ? i + 1 : 0, a = first + i, b = first + j;
     if (p_eq(g.pts[a], g.pts[b])) continue;
-    i64 l = g.line(a, b);
-    out.push_back(EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, layer});
+    EdgeIn& e = out.emplace_back();
+    e.line = g.line(a, b);
+    e.v0 = v0 + i;
+    e.v1 = v0 + j;
+    e.w = w;
+    e.layer = layer;
   }
 }
 

@@ -298,13 +298,20 @@ class Overlay {
     }
   }
 
-  // certainly the same point without arithmetic: the same id, or crossings of the same
-  // two lines (false: not known)
+  // certainly the same point without the crossings' coordinates: the same id, crossings
+  // of the same two lines, or crossings of one line with two lines that are one line (two
+  // exact orientations: the edges of piece sums are often collinear, and a line crossing
+  // two of them meets both in one point) (false: not known)
   bool same_vertex(i64 a, i64 b) const {
     if (a == b) return true;
     const Vert &A = g_.verts[a], &B = g_.verts[b];
     if (A.p >= 0 || B.p >= 0) return false;
-    return (A.l1 == B.l1 && A.l2 == B.l2) || (A.l1 == B.l2 && A.l2 == B.l1);
+    if ((A.l1 == B.l1 && A.l2 == B.l2) || (A.l1 == B.l2 && A.l2 == B.l1)) return true;
+    // the other lines, when one is common
+    const i64 m = A.l1 == B.l1 || A.l1 == B.l2 ? A.l2 : (A.l2 == B.l1 || A.l2 == B.l2 ? A.l1 : -1);
+    if (m < 0) return false;
+    const i64 n = B.l1 == A.l1 || B.l1 == A.l2 ? B.l2 : B.l1;
+    return g_.same_line(m, n);
   }
   // along(line, a, b) with that shortcut
   int along_s(i64 line, i64 a, i64 b) const {
@@ -374,7 +381,13 @@ class Overlay {
     for (const EdgeIn& e : in) {
       i64 a = g2l_[e.v0].local, b = g2l_[e.v1].local;
       if (a != b && e.w != 0) {
-        ed_.push_back(EdgeIn{e.line, a, b, e.w, e.layer, e.group});
+        EdgeIn& x = ed_.emplace_back();  // written in place (see Geo::point)
+        x.line = e.line;
+        x.v0 = a;
+        x.v1 = b;
+        x.w = e.w;
+        x.layer = e.layer;
+        x.group = e.group;
         if (e.group >= ngroups_) ngroups_ = e.group + 1;
       }
     }
@@ -397,6 +410,7 @@ class Overlay {
   std::vector<double> sx0_, sy0_, sx1_, sy1_, stol_;
   GridScratch grid_;
   TreeScratch tree_;
+  std::vector<i64> bstart_, border_;
   void intersect() {
     const i64 n = (i64)ed_.size();
     splits_.clear();
@@ -454,9 +468,18 @@ class Overlay {
                        resume >= 0 ? resume : 0, tree_, on_pair);
       return;
     }
-    if (n < 256)
+    if (n < 256) {
+      // the edges by their left vertex (local ids are sweep ranks): nearly in the order of
+      // their boxes' left sides (exactly, where the vertices are plain doubles)
+      const i64 nv = (i64)vg_.size();
+      bstart_.assign(nv + 1, 0);
+      for (const EdgeIn& e : ed_) ++bstart_[std::min(e.v0, e.v1) + 1];
+      for (i64 v = 0; v < nv; ++v) bstart_[v + 1] += bstart_[v];
+      border_.resize(n);
+      for (i64 i = 0; i < n; ++i) border_[bstart_[std::min(ed_[i].v0, ed_[i].v1)]++] = i;
       box_pairs_scan(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(), boxes_,
-                     on_pair);
+                     on_pair, border_.data());
+    }
     else
       box_pairs_grouped(n, bx0_.data(), bx1_.data(), by0_.data(), by1_.data(), grp_.data(),
                         ngroups_, boxes_, on_pair);
@@ -669,41 +692,55 @@ class Overlay {
     for (i64 v = 0; v < m; ++v) {
       const i64 a = pstart_[v], b = pstart_[v + 1];
       pstart_[v] = (i64)pcs_.size();
-      if (b - a > 1)
-        std::sort(raw_.begin() + a, raw_.begin() + b, [](const RawP& x, const RawP& y) {
-          return x.r < y.r || (x.r == y.r && x.src < y.src);
-        });
+      auto raw_less = [](const RawP& x, const RawP& y) {
+        return x.r < y.r || (x.r == y.r && x.src < y.src);
+      };
+      if (b - a == 2) {  // the common case, without a call
+        if (raw_less(raw_[a + 1], raw_[a])) std::swap(raw_[a], raw_[a + 1]);
+      } else if (b - a > 2) {
+        std::sort(raw_.begin() + a, raw_.begin() + b, raw_less);
+      }
       for (i64 q = a; q < b;) {
-        Piece pc;
-        pc.l = (i32)v;
-        pc.r = raw_[q].r;
-        pc.src = raw_[q].src;
-        pc.line = ed_[pc.src].line;
-        pc.s = raw_[q].s;
-        pc.c0 = pc.c1 = pc.n0 = pc.nl = pc.b0 = pc.b1 = 0;
-        pc.ld = 0;
+        const i32 r = raw_[q].r;
+        i32 c0 = 0, c1 = 0, n0 = 0, nl = 0;
+        std::int8_t ld = 0;
         i64 q1 = q;
-        for (; q1 < b && raw_[q1].r == pc.r; ++q1) {
+        for (; q1 < b && raw_[q1].r == r; ++q1) {
           const RawP& x = raw_[q1];
           const EdgeIn& e = ed_[x.src];
           const int c = x.fwd ? e.w : -e.w;  // the weight crossing upwards
-          if (e.layer == 0) pc.c0 += c;
-          if (e.layer == 1) pc.c1 += c;
-          if (e.layer == 0 && c < 0) pc.n0 -= c;
+          if (e.layer == 0) c0 += c;
+          if (e.layer == 1) c1 += c;
+          if (e.layer == 0 && c < 0) n0 -= c;
           if (e.layer == 2) {
-            if (!pc.nl) pc.ld = x.fwd ? 1 : -1;  // the first line edge's direction
-            ++pc.nl;
+            if (!nl) ld = x.fwd ? 1 : -1;  // the first line edge's direction
+            ++nl;
           }
         }
         // keep_zero_: a piece where rings meet from both sides stays (degenerate())
-        if (pc.c0 != 0 || pc.c1 != 0 || pc.nl != 0 || (keep_zero_ && q1 > q + 1))
-          pcs_.push_back(pc);
+        if (c0 != 0 || c1 != 0 || nl != 0 || (keep_zero_ && q1 > q + 1)) {
+          Piece& pc = pcs_.emplace_back();  // written in place (see Geo::point)
+          pc.l = (i32)v;
+          pc.r = r;
+          pc.src = raw_[q].src;
+          pc.line = ed_[pc.src].line;
+          pc.s = raw_[q].s;
+          pc.c0 = c0;
+          pc.c1 = c1;
+          pc.n0 = n0;
+          pc.nl = nl;
+          pc.b0 = pc.b1 = 0;
+          pc.ld = ld;
+        }
         q = q1;
       }
       const i64 p0 = pstart_[v], p1 = (i64)pcs_.size();
-      if (p1 - p0 > 1)
+      if (p1 - p0 == 2) {
+        if (slope_below(pcs_[p0 + 1], pcs_[p0])) std::swap(pcs_[p0], pcs_[p0 + 1]);
+      } else if (p1 - p0 > 2) {
         std::sort(pcs_.begin() + p0, pcs_.begin() + p1,
                   [&](const Piece& x, const Piece& y) { return slope_below(x, y); });
+      }
     }
     pstart_[m] = (i64)pcs_.size();
     n_edges = (i64)pcs_.size();

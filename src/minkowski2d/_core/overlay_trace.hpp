@@ -52,6 +52,10 @@ inline std::size_t first_false(std::size_t n, std::size_t g, Pred&& p) {
   return lo;
 }
 
+// a status of at most this many pieces (in one chunk) is scanned for the pieces that end
+// at a vertex, which those that start there replace in place
+constexpr std::size_t kSmallStatus = 64;
+
 template <class F>
 inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>& start,
                            F&& at_vertex) {
@@ -71,8 +75,33 @@ inline void Overlay::sweep(const std::vector<Piece>& ps, const std::vector<i64>&
       return e.r != v && side(e, v) > 0;  // v is on the pieces that end at v
     };
     // the first piece not below v: its chunk c, then its place o in it, each searched
-    // from the place of the last vertex (consecutive vertices are often close)
+    // from the place of the last vertex (consecutive vertices are often close); in a
+    // small status, the first of the pieces that end at v when there are any (no side
+    // test: a piece below v does not end there)
     const std::size_t nc = st.size();
+    if (nc == 1 && ch[0].size() <= kSmallStatus) {
+      // a small status: the pieces that end at v replaced in place by those that start
+      std::vector<i64>& cur = ch[0];
+      std::size_t o = 0;
+      if (nend > 0)
+        while (ps[cur[o]].r != v) ++o;
+      else
+        o = first_false(cur.size(), fo, [&](std::size_t k) { return below(cur[k]); });
+      const i64 pred = o > 0 ? cur[o - 1] : -1;
+      if (nstart > nend)
+        cur.insert(cur.begin() + (std::ptrdiff_t)(o + nend), (std::size_t)(nstart - nend), 0);
+      else if (nstart < nend)
+        cur.erase(cur.begin() + (std::ptrdiff_t)(o + nstart), cur.begin() + (std::ptrdiff_t)(o + nend));
+      for (i64 q = 0; q < nstart; ++q) cur[o + (std::size_t)q] = start[v] + q;
+      fc = 0;
+      fo = o + (std::size_t)nstart;
+      if (cur.empty()) {
+        st.close(0);
+        fo = 0;
+      }
+      if (nstart > 0) at_vertex(start[v], start[v + 1], pred);
+      continue;
+    }
     std::size_t c = first_false(nc, fc, [&](std::size_t k) { return below(ch[k].back()); });
     std::size_t o = 0;
     if (c < nc)

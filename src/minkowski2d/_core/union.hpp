@@ -35,9 +35,11 @@
 //           a neighbourhood of that vertex lies in int(U) and meets int(P); int(P) is
 //           connected and misses dU by (a), so int(P), hence P, lies in U.
 //     Anything else keeps the piece: keeping is always correct, dropping is proved.
+//     The grid is built when a test first needs it.
 //  4. Sources make the pieces on demand (SumSource merges two convex pieces), so the
-//     1.6 M sums of the stars never exist at once; only kept pieces enter the geometry.
-//     One thread's geometry and buffers are reused between calls (Workspace).
+//     1.7 M sums of the stars never exist at once; only kept pieces enter the geometry.
+//     One thread's geometry and buffers are reused between calls (Workspace). One convex
+//     piece of plain doubles is its own union (the overlay's arrays, without a run).
 //  5. Work limits. max_crossings bounds the crossings noded by all overlay runs together
 //     (each is a new vertex: the memory), max_pairs the candidate pairs classified (the
 //     time): beyond either the result is Status RESOURCE and no rings (the caller raises
@@ -48,6 +50,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <numeric>
 #include <type_traits>
@@ -72,9 +75,9 @@ struct UnionStats {
   i64 pieces = 0, culled = 0, kept = 0, rounds = 0, runs = 0, pairs = 0, crossings = 0;
 };
 
-// A source of convex pieces: size(), and get(k, v) filling v with piece k's vertices
-// (DD points, strictly convex, counter-clockwise); fewer than 3 vertices: no area (the
-// piece is skipped).
+// A source of convex pieces: size(), and get(k, v, p, m) pointing p at piece k's m
+// vertices (DD points, strictly convex, counter-clockwise; v is scratch it may fill);
+// fewer than 3 vertices: no area (the piece is skipped).
 class ConvexUnion {
  public:
   explicit ConvexUnion(Geo& g) : g_(g), o_(g), idx_(g) {}
@@ -100,19 +103,22 @@ class ConvexUnion {
     // 1. order (heuristics in double; they decide nothing): the first_k largest pieces,
     // then the others by their reach from the centre of all, farthest first (ties: input
     // order)
-    std::vector<double> area(n), reach(n);
-    std::vector<P> v;
+    std::vector<double>& area = area_;
+    std::vector<double>& reach = reach_;
+    area.resize(n);
+    reach.resize(n);
     double cx0, cx1, cy0, cy1;
     src.bounds(cx0, cx1, cy0, cy1);
     const double cx = cx0 / 2 + cx1 / 2, cy = cy0 / 2 + cy1 / 2;
+    const P* pv;
+    i64 m;
     for (i64 k = 0; k < n; ++k) {
-      if (src.get(k, v) != OK) return finish(out, OVERFLOW);
+      if (src.get(k, v_, pv, m) != OK) return finish(out, OVERFLOW);
       double a = 0, r = 0;
-      const i64 m = (i64)v.size();
       for (i64 i = 0; i < m; ++i) {
-        const P &p = v[i], &q = v[i + 1 < m ? i + 1 : 0];
-        a += (p.x.hi - v[0].x.hi) * (q.y.hi - v[0].y.hi) -
-             (p.y.hi - v[0].y.hi) * (q.x.hi - v[0].x.hi);
+        const P &p = pv[i], &q = pv[i + 1 < m ? i + 1 : 0];
+        a += (p.x.hi - pv[0].x.hi) * (q.y.hi - pv[0].y.hi) -
+             (p.y.hi - pv[0].y.hi) * (q.x.hi - pv[0].x.hi);
         double dx = p.x.hi - cx, dy = p.y.hi - cy;
         r = std::max(r, dx * dx + dy * dy);
       }
@@ -120,50 +126,55 @@ class ConvexUnion {
       area[k] = m < 3 ? -1.0 : (a >= 0 && a < INFINITY ? a : (a < 0 ? 0.0 : DBL_MAX));
       reach[k] = r == r ? r : DBL_MAX;
     }
-    std::vector<std::pair<double, i64>> key;
-    key.reserve(n);
-    std::vector<i64> order;
-    order.reserve(n);
+    std::vector<std::pair<double, i64>>& key = key_;
+    std::vector<i64>& order = order_;
+    key.clear();
+    order.clear();
     {
       for (i64 k = 0; k < n; ++k)
         if (area[k] >= 0) key.emplace_back(-area[k], k);
       const i64 K = std::min<i64>((i64)key.size(), first_k);
       std::partial_sort(key.begin(), key.begin() + K, key.end());
-      std::vector<char> first(n, 0);
       for (i64 t = 0; t < K; ++t) {
         order.push_back(key[t].second);
-        first[key[t].second] = 1;
+        area[key[t].second] = -1;  // taken
       }
       key.clear();
       for (i64 k = 0; k < n; ++k)
-        if (area[k] >= 0 && !first[k]) key.emplace_back(-reach[k], k);
+        if (area[k] >= 0) key.emplace_back(-reach[k], k);
       std::sort(key.begin(), key.end());
       for (auto& kk : key) order.push_back(kk.second);
     }
-    std::vector<double>().swap(reach);
-    std::vector<double>().swap(area);
-    std::vector<std::pair<double, i64>>().swap(key);
+    // one convex piece of plain doubles: the union is the piece, as the overlay gives it
+    // (counter-clockwise from its smallest vertex, x then y; tests/test_union_core.py)
+    if (order.size() == 1 && src.convex(order[0])) {
+      src.get(order[0], v_, pv, m);
+      if (one_piece(pv, m, out)) {
+        st.kept = 1;
+        return out.status;
+      }
+    }
     // 2. rounds
     ubnd_.clear();
     uverts_.clear();
-    pending_.clear();
+    pend_.clear();
     i64 pend_edges = 0;
     for (std::size_t q = 0; q < order.size(); ++q) {
       const i64 k = order[q];
-      src.get(k, v);
+      src.get(k, v_, pv, m);
       const bool cvx = src.convex(k);
-      if (cull && cvx && idx_.covers(v.data(), (i64)v.size())) {
+      if (cull && cvx && idx_.covers(pv, m)) {
         ++st.culled;
         continue;
       }
       ++st.kept;
-      pending_.emplace_back();
-      i64 first = (i64)g_.pts.size();
-      for (const P& p : v) g_.point(p.x, p.y);
-      ov::add_ring(g_, first, (i64)v.size(), 1, 0, pending_.back());
+      const i64 first = (i64)g_.pts.size(), e0 = (i64)pend_.e.size();
+      for (i64 i = 0; i < m; ++i) g_.point(pv[i].x, pv[i].y);
+      ov::add_ring(g_, first, m, 1, 0, pend_.e);
       if (!cvx)  // its edges may cross each other: no group
-        for (EdgeIn& e : pending_.back()) e.group = -2;
-      pend_edges += (i64)pending_.back().size();
+        for (std::size_t i = e0; i < pend_.e.size(); ++i) pend_.e[i].group = -2;
+      pend_.close();
+      pend_edges += (i64)pend_.e.size() - e0;
       // (after the last piece, the last round below gives the rings: no index)
       if (q + 1 < order.size() &&
           pend_edges >= std::max(min_batch, (i64)(round_factor * (double)ubnd_.size()))) {
@@ -177,12 +188,59 @@ class ConvexUnion {
   }
 
  private:
+  // pieces waiting for a round, as one list of edges: part k is e[off[k] .. off[k + 1])
+  struct Parts {
+    std::vector<EdgeIn> e;
+    std::vector<i64> off{0};
+    std::size_t size() const { return off.size() - 1; }
+    void clear() {
+      e.clear();
+      off.assign(1, 0);
+    }
+    void close() { off.push_back((i64)e.size()); }
+  };
+  // the buffers of one level of a cascade (reused between calls)
+  struct Level {
+    std::vector<EdgeIn> in;
+    std::vector<BEdge> a, b;
+    std::vector<i64> av, bv;
+  };
+
   Geo& g_;
   ov::Overlay o_;
   BoundaryIndex idx_;
-  std::vector<BEdge> ubnd_;   // the boundary of the union so far
-  std::vector<i64> uverts_;   // its vertices in sweep order
-  std::vector<std::vector<EdgeIn>> pending_;
+  std::vector<BEdge> ubnd_, nb_;  // the boundary of the union so far, the next one
+  std::vector<i64> uverts_;       // its vertices in sweep order
+  Parts pend_;
+  std::vector<P> v_;
+  std::vector<double> area_, reach_, mx_, my_;
+  std::vector<std::pair<double, i64>> key_;
+  std::vector<std::pair<u64, i64>> hk_;
+  std::vector<i64> order_, ord_;
+  std::deque<Level> levels_;  // (references stay valid as it grows)
+
+  static bool one_piece(const P* p, i64 m, Rings& out) {
+    i64 s = 0;
+    for (i64 i = 0; i < m; ++i) {
+      if (!ov::plain(p[i])) return false;
+      if (p[i].x.hi < p[s].x.hi || (p[i].x.hi == p[s].x.hi && p[i].y.hi < p[s].y.hi)) s = i;
+    }
+    out.clear();
+    for (i64 i = 0; i < m; ++i) {
+      const P& q = p[s + i < m ? s + i : s + i - m];
+      out.xy.push_back(q.x.hi);
+      out.xy.push_back(q.y.hi);
+    }
+    out.ring_off.push_back(m);
+    out.poly_off.push_back(1);
+    out.exact_vertices = true;
+    return true;
+  }
+
+  Level& level(std::size_t d) {
+    if (levels_.size() <= d) levels_.resize(d + 1);
+    return levels_[d];
+  }
 
   int finish(Rings& out, int code) {
     out.clear();
@@ -192,7 +250,15 @@ class ConvexUnion {
   int finish_limit(Rings& out) { return finish(out, RESOURCE); }
 
   static void add_boundary(const std::vector<BEdge>& b, int group, std::vector<EdgeIn>& in) {
-    for (const BEdge& e : b) in.push_back(EdgeIn{e.line, e.from, e.to, 1, 0, group});
+    for (const BEdge& e : b) {
+      EdgeIn& x = in.emplace_back();  // written in place (see Geo::point)
+      x.line = e.line;
+      x.v0 = e.from;
+      x.v1 = e.to;
+      x.w = 1;
+      x.layer = 0;
+      x.group = group;
+    }
   }
 
   template <class Out>
@@ -210,9 +276,8 @@ class ConvexUnion {
   // pending pieces united with U: the new U (and its index)
   bool round() {
     ++st.rounds;
-    std::vector<BEdge> nb;
-    if (!absorb(nb)) return false;
-    ubnd_.swap(nb);
+    if (!absorb(nb_)) return false;
+    ubnd_.swap(nb_);
     o_.boundary_vertices(uverts_);
     if (cull) idx_.build(ubnd_);
     return true;
@@ -223,106 +288,109 @@ class ConvexUnion {
   template <class Out>
   bool absorb(Out& out) {
     if constexpr (std::is_same_v<Out, Rings>) {
-      if (pending_.empty() && !ubnd_.empty()) {
+      if (pend_.size() == 0 && !ubnd_.empty()) {
         // nothing new since the last round: the rings of its run, which gave dU
         o_.rings(out);
         return true;
       }
     }
-    std::vector<EdgeIn> in;
+    Level& L = level(0);
+    std::vector<EdgeIn>& in = L.in;
+    in.clear();
     bool ok;
-    if ((i64)pending_.size() <= leaf) {
+    if ((i64)pend_.size() <= leaf) {
       add_boundary(ubnd_, 0, in);
-      std::vector<i64> ord(pending_.size());
-      std::iota(ord.begin(), ord.end(), 0);
-      leaf_edges(pending_, ord, 0, ord.size(), in, ubnd_.empty() ? 0 : 1);
+      ord_.resize(pend_.size());
+      std::iota(ord_.begin(), ord_.end(), 0);
+      leaf_edges(pend_, ord_, 0, ord_.size(), in, ubnd_.empty() ? 0 : 1);
       ok = ubnd_.empty() ? run(in, out) : run(in, out, {&uverts_});
     } else if (ubnd_.empty()) {
-      ok = cascade(pending_, out);
+      ok = cascade(pend_, out);
     } else {
-      std::vector<BEdge> vb;
-      std::vector<i64> vv;
-      ok = cascade(pending_, vb, vv);
+      ok = cascade(pend_, L.a, L.av);
       if (ok) {
+        in.clear();
         add_boundary(ubnd_, 0, in);
-        add_boundary(vb, 1, in);
-        ok = run(in, out, {&uverts_, &vv});
+        add_boundary(L.a, 1, in);
+        ok = run(in, out, {&uverts_, &L.av});
       }
     }
-    pending_.clear();
+    pend_.clear();
     return ok;
   }
 
   // the union of parts as boundary edges (and their vertices in sweep order), or as
   // rings: a balanced tree over the parts in the order of a Hilbert curve
-  bool cascade(std::vector<std::vector<EdgeIn>>& parts, std::vector<BEdge>& out,
-               std::vector<i64>& outv) {
+  bool cascade(const Parts& parts, std::vector<BEdge>& out, std::vector<i64>& outv) {
     out.clear();
     outv.clear();
-    if (parts.empty()) return true;
-    std::vector<i64> ord;
-    spatial_order(parts, ord);
-    return rec(parts, ord, 0, ord.size(), out, outv);
+    if (parts.size() == 0) return true;
+    spatial_order(parts, ord_);
+    return rec(parts, ord_, 0, ord_.size(), out, outv, 1);
   }
   template <class Out>
-  bool cascade(std::vector<std::vector<EdgeIn>>& parts, Out& out) {
+  bool cascade(const Parts& parts, Out& out) {
     out.clear();
-    if (parts.empty()) return true;
-    std::vector<i64> ord;
-    spatial_order(parts, ord);
-    std::vector<EdgeIn> in;
+    if (parts.size() == 0) return true;
+    spatial_order(parts, ord_);
+    Level& L = level(0);
+    std::vector<EdgeIn>& in = L.in;
+    in.clear();
     if ((i64)parts.size() <= leaf) {
-      leaf_edges(parts, ord, 0, ord.size(), in);
+      leaf_edges(parts, ord_, 0, ord_.size(), in);
       return run(in, out);
     }
-    std::size_t n = ord.size(), groups = (n + leaf - 1) / leaf, mid = (groups / 2) * leaf;
-    std::vector<BEdge> a, b;
-    std::vector<i64> av, bv;
-    if (!rec(parts, ord, 0, mid, a, av) || !rec(parts, ord, mid, n, b, bv)) return false;
-    add_boundary(a, 0, in);
-    add_boundary(b, 1, in);
-    return run(in, out, {&av, &bv});
+    std::size_t n = ord_.size(), groups = (n + leaf - 1) / leaf, mid = (groups / 2) * leaf;
+    if (!rec(parts, ord_, 0, mid, L.a, L.av, 1) || !rec(parts, ord_, mid, n, L.b, L.bv, 1))
+      return false;
+    add_boundary(L.a, 0, in);
+    add_boundary(L.b, 1, in);
+    return run(in, out, {&L.av, &L.bv});
   }
   // the edges of parts ord[lo:hi], each part its own group (from `first`) unless it may
   // cross itself
-  void leaf_edges(const std::vector<std::vector<EdgeIn>>& parts, const std::vector<i64>& ord,
-                  std::size_t lo, std::size_t hi, std::vector<EdgeIn>& in, int first = 0) const {
+  void leaf_edges(const Parts& parts, const std::vector<i64>& ord, std::size_t lo,
+                  std::size_t hi, std::vector<EdgeIn>& in, int first = 0) const {
     for (std::size_t k = lo; k < hi; ++k)
-      for (EdgeIn e : parts[ord[k]]) {
+      for (i64 t = parts.off[ord[k]]; t < parts.off[ord[k] + 1]; ++t) {
+        EdgeIn& e = in.emplace_back();
+        e = parts.e[t];
         e.group = e.group == -2 ? -1 : first + (int)(k - lo);
-        in.push_back(e);
       }
   }
-  void spatial_order(const std::vector<std::vector<EdgeIn>>& parts, std::vector<i64>& ord) {
+  void spatial_order(const Parts& parts, std::vector<i64>& ord) {
     // the parts along a Hilbert curve through their box centres (neighbours share leaves)
-    std::vector<double> mx(parts.size()), my(parts.size());
+    const std::size_t np = parts.size();
+    mx_.resize(np);
+    my_.resize(np);
     double X0 = INFINITY, X1 = -INFINITY, Y0 = INFINITY, Y1 = -INFINITY;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
+    for (std::size_t k = 0; k < np; ++k) {
       double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-      for (const EdgeIn& e : parts[k]) {
-        const ov::Vert& V = g_.verts[e.v0];
+      for (i64 t = parts.off[k]; t < parts.off[k + 1]; ++t) {
+        const ov::Vert& V = g_.verts[parts.e[t].v0];
         x0 = std::min(x0, V.x.v);
         x1 = std::max(x1, V.x.v);
         y0 = std::min(y0, V.y.v);
         y1 = std::max(y1, V.y.v);
       }
-      mx[k] = x0 / 2 + x1 / 2;
-      my[k] = y0 / 2 + y1 / 2;
-      X0 = std::min(X0, mx[k]);
-      X1 = std::max(X1, mx[k]);
-      Y0 = std::min(Y0, my[k]);
-      Y1 = std::max(Y1, my[k]);
+      mx_[k] = x0 / 2 + x1 / 2;
+      my_[k] = y0 / 2 + y1 / 2;
+      X0 = std::min(X0, mx_[k]);
+      X1 = std::max(X1, mx_[k]);
+      Y0 = std::min(Y0, my_[k]);
+      Y1 = std::max(Y1, my_[k]);
     }
-    std::vector<std::pair<u64, i64>> cx(parts.size());
+    std::vector<std::pair<u64, i64>>& cx = hk_;
+    cx.resize(np);
     const double sx = X1 > X0 ? 65535.0 / (X1 - X0) : 0.0, sy = Y1 > Y0 ? 65535.0 / (Y1 - Y0) : 0.0;
-    for (std::size_t k = 0; k < parts.size(); ++k) {
-      double fx = (mx[k] - X0) * sx, fy = (my[k] - Y0) * sy;
+    for (std::size_t k = 0; k < np; ++k) {
+      double fx = (mx_[k] - X0) * sx, fy = (my_[k] - Y0) * sy;
       u64 ix = fx > 0 ? (u64)std::min(fx, 65535.0) : 0, iy = fy > 0 ? (u64)std::min(fy, 65535.0) : 0;
       cx[k] = {hilbert(ix, iy), (i64)k};
     }
     std::sort(cx.begin(), cx.end());
-    ord.resize(parts.size());
-    for (std::size_t k = 0; k < parts.size(); ++k) ord[k] = cx[k].second;
+    ord.resize(np);
+    for (std::size_t k = 0; k < np; ++k) ord[k] = cx[k].second;
   }
   // index of (x, y) (16 bits each) along the Hilbert curve
   static u64 hilbert(u64 x, u64 y) {
@@ -341,20 +409,25 @@ class ConvexUnion {
     }
     return d;
   }
-  bool rec(const std::vector<std::vector<EdgeIn>>& parts, const std::vector<i64>& ord,
-           std::size_t lo, std::size_t hi, std::vector<BEdge>& out, std::vector<i64>& outv) {
-    std::vector<EdgeIn> in;
+  // parts ord[lo:hi] united (level d of the cascade: its buffers)
+  bool rec(const Parts& parts, const std::vector<i64>& ord, std::size_t lo, std::size_t hi,
+           std::vector<BEdge>& out, std::vector<i64>& outv, std::size_t d) {
+    std::vector<EdgeIn>& in = level(d).in;
+    in.clear();
     if ((i64)(hi - lo) <= leaf) {
       leaf_edges(parts, ord, lo, hi, in);
       if (!run(in, out)) return false;
     } else {
       std::size_t n = hi - lo, groups = (n + leaf - 1) / leaf, mid = lo + (groups / 2) * leaf;
-      std::vector<BEdge> a, b;
-      std::vector<i64> av, bv;
-      if (!rec(parts, ord, lo, mid, a, av) || !rec(parts, ord, mid, hi, b, bv)) return false;
-      add_boundary(a, 0, in);
-      add_boundary(b, 1, in);
-      if (!run(in, out, {&av, &bv})) return false;
+      // (levels_ may grow below: take the buffers by index after the calls)
+      if (!rec(parts, ord, lo, mid, level(d).a, level(d).av, d + 1) ||
+          !rec(parts, ord, mid, hi, level(d).b, level(d).bv, d + 1))
+        return false;
+      Level& L = level(d);
+      L.in.clear();
+      add_boundary(L.a, 0, L.in);
+      add_boundary(L.b, 1, L.in);
+      if (!run(L.in, out, {&L.av, &L.bv})) return false;
     }
     o_.boundary_vertices(outv);
     return true;
@@ -372,6 +445,11 @@ struct Workspace {
   static constexpr std::size_t KEEP = std::size_t(1) << 18;
   Geo g;
   ConvexUnion u{g};
+  // union_rings' normalized rings
+  std::vector<i64> keep, idx, po;
+  std::vector<std::int8_t> turn;
+  std::vector<P> pts;
+  std::vector<char> convex;
   void clear() {
     g.pts.clear();
     g.lines.clear();
@@ -405,8 +483,9 @@ inline auto with_workspace(F&& f) {
 }
 
 // ------------------------------------------------------------------------------------
-// sources: size(), and get(k, v) -> OK (v: piece k's vertices, strictly convex, counter-
-// clockwise, or empty when it has no area) or OVERFLOW (a coordinate is not finite)
+// sources: size(), and get(k, v, p, m) -> OK (p: piece k's m vertices, strictly convex,
+// counter-clockwise, m = 0 when it has no area; v: scratch the source may fill and point
+// p into) or OVERFLOW (a coordinate is not finite)
 
 // Drops the vertices where a convex ring goes straight on (or doubles back: a ring of no
 // area); clears v when fewer than 3 remain. Exact.
@@ -435,9 +514,10 @@ struct PointSource {
   const std::vector<char>* convex_flags = nullptr;
   i64 size() const { return (i64)off->size() - 1; }
   bool convex(i64 k) const { return !convex_flags || (*convex_flags)[k]; }
-  int get(i64 k, std::vector<P>& v) const {
-    v.assign(pts->begin() + (*off)[k], pts->begin() + (*off)[k + 1]);
-    if (v.size() < 3) v.clear();
+  int get(i64 k, std::vector<P>&, const P*& p, i64& m) const {
+    p = pts->data() + (*off)[k];
+    m = (*off)[k + 1] - (*off)[k];
+    if (m < 3) m = 0;
     return OK;
   }
   // a box around all pieces (approximate: for the order only)
@@ -460,6 +540,12 @@ struct SumSource {
   const std::vector<Norm>*NA, *NB;
   i64 size() const { return (i64)NA->size() * (i64)NB->size(); }
   bool convex(i64) const { return true; }
+  int get(i64 k, std::vector<P>& v, const P*& p, i64& m) const {
+    int code = get(k, v);
+    p = v.data();
+    m = (i64)v.size();
+    return code;
+  }
   int get(i64 k, std::vector<P>& v) const {
     const i64 nb = (i64)NB->size();
     const Norm &A = (*NA)[k / nb], &B = (*NB)[k % nb];
@@ -573,48 +659,53 @@ inline std::vector<ov::P> general_ring(const double* xy, i64 lo, i64 hi) {
 inline void union_rings(const double* xy, const i64* off, i64 np, bool cull, i64 max_crossings,
                         i64 max_pairs, ov::Rings& out, UnionStats& st, i64& bad_poly,
                         i64& bad_vertex) {
-  i64 big = 1;
-  for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
-  std::vector<i64> keep(big), idx(big);
-  std::vector<std::int8_t> turn(big);
-  std::vector<ov::P> pts;
-  std::vector<i64> po{0};
-  std::vector<char> convex;
-  pts.reserve((std::size_t)off[np]);
-  for (i64 k = 0; k < np && out.status == OK; ++k) {
-    Norm N = normalize(xy, off[k], off[k + 1], keep.data(), turn.data(), idx.data());
-    if (N.code == NONFINITE || N.code == RANGE) {
-      out.status = N.code;
-      bad_poly = k;
-      bad_vertex = N.vertex;
-      break;
-    }
-    if (N.code == OK) {
-      if (N.k < 3) continue;  // a point or a segment: no area
-      for (i64 t = 0; t < N.k; ++t) {
-        i64 i = N.at(t);
-        pts.push_back(ov::P{ov::dd(xy[2 * i]), ov::dd(xy[2 * i + 1])});
+  with_workspace([&](Workspace& w) {
+    i64 big = 1;
+    for (i64 k = 0; k < np; ++k) big = std::max(big, off[k + 1] - off[k]);
+    w.keep.resize(big);
+    w.idx.resize(big);
+    w.turn.resize(big);
+    std::vector<ov::P>& pts = w.pts;
+    std::vector<i64>& po = w.po;
+    pts.clear();
+    po.assign(1, 0);
+    w.convex.clear();
+    pts.reserve((std::size_t)off[np]);
+    for (i64 k = 0; k < np && out.status == OK; ++k) {
+      Norm N = normalize(xy, off[k], off[k + 1], w.keep.data(), w.turn.data(), w.idx.data());
+      if (N.code == NONFINITE || N.code == RANGE) {
+        out.status = N.code;
+        bad_poly = k;
+        bad_vertex = N.vertex;
+        break;
       }
-      convex.push_back(1);
-    } else {
-      std::vector<ov::P> r = general_ring(xy, off[k], off[k + 1]);
-      if (r.empty()) continue;
-      pts.insert(pts.end(), r.begin(), r.end());
-      convex.push_back(0);
+      if (N.code == OK) {
+        if (N.k < 3) continue;  // a point or a segment: no area
+        for (i64 t = 0; t < N.k; ++t) {
+          i64 i = N.at(t);
+          ov::P& q = pts.emplace_back();
+          q.x = ov::dd(xy[2 * i]);
+          q.y = ov::dd(xy[2 * i + 1]);
+        }
+        w.convex.push_back(1);
+      } else {
+        std::vector<ov::P> r = general_ring(xy, off[k], off[k + 1]);
+        if (r.empty()) continue;
+        pts.insert(pts.end(), r.begin(), r.end());
+        w.convex.push_back(0);
+      }
+      po.push_back((i64)pts.size());
     }
-    po.push_back((i64)pts.size());
-  }
-  if (out.status == OK) {
-    PointSource src{&pts, &po, &convex};
-    with_workspace([&](Workspace& w) {
+    if (out.status == OK) {
+      PointSource src{&pts, &po, &w.convex};
       w.u.cull = cull;
       w.u.max_crossings = max_crossings;
       w.u.max_pairs = max_pairs;
       w.u.unite(src, out);
       st = w.u.st;
-      return 0;
-    });
-  }
+    }
+    return 0;
+  });
 }
 
 }  // namespace un

@@ -127,6 +127,17 @@ class BoundaryIndex {
       Y1_ = std::max(Y1_, by1_[i]);
     }
     if (!(X1_ - X0_ < INFINITY) || !(Y1_ - Y0_ < INFINITY)) return;  // unbounded: no index
+    // the grid when a test first needs it (the pieces tested before the next round may
+    // all fall outside the box)
+    grid_ready_ = false;
+    built_ = true;
+  }
+
+ private:
+  // the grid over the edges, its cells and its empty components
+  void grid() {
+    grid_ready_ = true;
+    const i64 n = (i64)e_->size();
     // about two cells per edge, square-ish
     double W = X1_ - X0_, H = Y1_ - Y0_;
     double target = std::max(1.0, 2.0 * (double)n);
@@ -139,23 +150,23 @@ class BoundaryIndex {
     // cells of each edge (CSR, row-major)
     const i64 nc = nx * ny;
     start_.assign(nc + 1, 0);
-    for (int pass = 0; pass < 2; ++pass) {
-      if (pass == 1) {
-        for (i64 c = 0; c < nc; ++c) start_[c + 1] += start_[c];
-        cells_.resize(start_[nc]);
-        fill_.assign(start_.begin(), start_.end() - 1);
-      }
-      for (i64 i = 0; i < n; ++i) {
-        i64 c0 = xs_.first(bx0_[i]), c1 = xs_.last(bx1_[i]);
-        i64 r0 = ys_.first(by0_[i]), r1 = ys_.last(by1_[i]);
-        for (i64 r = r0; r <= r1; ++r)
-          for (i64 c = c0; c <= c1; ++c) {
-            if (pass == 0)
-              ++start_[r * nx + c + 1];
-            else
-              cells_[fill_[r * nx + c]++] = i;
-          }
-      }
+    span_.resize(n);
+    for (i64 i = 0; i < n; ++i) {
+      Span& sp = span_[i];
+      sp.c0 = (std::int32_t)xs_.first(bx0_[i]);
+      sp.c1 = (std::int32_t)xs_.last(bx1_[i]);
+      sp.r0 = (std::int32_t)ys_.first(by0_[i]);
+      sp.r1 = (std::int32_t)ys_.last(by1_[i]);
+      for (i64 r = sp.r0; r <= sp.r1; ++r)
+        for (i64 c = sp.c0; c <= sp.c1; ++c) ++start_[r * nx + c + 1];
+    }
+    for (i64 c = 0; c < nc; ++c) start_[c + 1] += start_[c];
+    cells_.resize(start_[nc]);
+    fill_.assign(start_.begin(), start_.end() - 1);
+    for (i64 i = 0; i < n; ++i) {
+      const Span& sp = span_[i];
+      for (i64 r = sp.r0; r <= sp.r1; ++r)
+        for (i64 c = sp.c0; c <= sp.c1; ++c) cells_[fill_[r * nx + c]++] = i;
     }
     // registrations in the cells [0, r) x [0, c)
     sum_.assign((ny + 1) * (nx + 1), 0);
@@ -166,9 +177,9 @@ class BoundaryIndex {
     stamp_.assign(n, 0);
     epoch_ = 0;
     components();
-    built_ = true;
   }
 
+ public:
   // Is the convex piece p[0..m) (strictly convex, counter-clockwise, m >= 3) inside the
   // union (closed)? true only when proved; false means "keep it".
   bool covers(const P* p, i64 m) {
@@ -186,6 +197,7 @@ class BoundaryIndex {
       ++n_box;
       return false;
     }
+    if (!grid_ready_) grid();
     M = std::max(std::max(std::fabs(px0), std::fabs(px1)), std::max(std::fabs(py0), std::fabs(py1)));
     // the spans below are in double: widened by far more than their rounding errors
     // (a few ulps of M) and the DD parts (half an ulp), see span_slack
@@ -206,14 +218,15 @@ class BoundaryIndex {
           std::swap(ay, cy);
         }
         i64 e0 = std::max(r0, ys_.first(ay - tol)), e1 = std::min(r1, ys_.last(cy + tol));
+        const double inv = cy == ay ? 0.0 : 1.0 / (cy - ay);
         for (i64 r = e0; r <= e1; ++r) {
           double b0 = ys_.v[r] - tol, b1 = ys_.v[r + 1] + tol, lo_x, hi_x;
           if (cy == ay) {
             lo_x = std::min(ax, cx);
             hi_x = std::max(ax, cx);
           } else {
-            double t0 = ay < b0 ? (b0 - ay) / (cy - ay) : 0.0;
-            double t1 = cy > b1 ? (b1 - ay) / (cy - ay) : 1.0;
+            double t0 = ay < b0 ? (b0 - ay) * inv : 0.0;
+            double t1 = cy > b1 ? (b1 - ay) * inv : 1.0;
             double x0 = ax + (cx - ax) * t0, x1 = ax + (cx - ax) * t1;
             lo_x = std::min(x0, x1);
             hi_x = std::max(x0, x1);
@@ -273,7 +286,7 @@ class BoundaryIndex {
  private:
   const Geo& g_;
   const std::vector<BEdge>* e_ = nullptr;
-  bool built_ = false;
+  bool built_ = false, grid_ready_ = false;
   std::vector<double> bx0_, bx1_, by0_, by1_;
   double X0_ = 0, X1_ = 0, Y0_ = 0, Y1_ = 0;
   Axis xs_, ys_;
@@ -281,6 +294,11 @@ class BoundaryIndex {
   std::vector<double> s0_, s1_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
+  struct Span {
+    std::int32_t c0, c1, r0, r1;  // an edge's cells: columns c0..c1, rows r0..r1
+  };
+  std::vector<Span> span_;
+  std::vector<std::pair<i64, i64>> stack_;
   std::vector<i64> comp_;     // component of an empty cell, -1 for a cell with edges
   std::vector<char> inside_;  // per component
 
@@ -389,33 +407,33 @@ class BoundaryIndex {
   }
 
   void components() {
-    const i64 nx = xs_.n, nc = nx * ys_.n;
-    comp_.assign(nc, -1);
+    const i64 nx = xs_.n, ny = ys_.n;
+    comp_.assign(nx * ny, -1);
     inside_.clear();
-    std::vector<i64> stack;
-    for (i64 s = 0; s < nc; ++s) {
-      if (cnt(s) != 0 || comp_[s] >= 0) continue;
-      const i64 id = (i64)inside_.size();
-      i64 r = s / nx, c = s % nx;
-      inside_.push_back(winding(xs_.v[c], ys_.v[r], c, r) >= 1 ? 1 : 0);
-      comp_[s] = id;
-      stack.assign(1, s);
-      while (!stack.empty()) {
-        i64 u = stack.back();
-        stack.pop_back();
-        i64 ur = u / nx, uc = u % nx;
-        auto visit = [&](i64 v) {
-          if (comp_[v] < 0 && cnt(v) == 0) {
-            comp_[v] = id;
-            stack.push_back(v);
-          }
-        };
-        if (uc > 0) visit(u - 1);
-        if (uc + 1 < nx) visit(u + 1);
-        if (ur > 0) visit(u - nx);
-        if (ur + 1 < ys_.n) visit(u + nx);
+    std::vector<std::pair<i64, i64>>& stack = stack_;  // (row, column)
+    for (i64 r = 0, s = 0; r < ny; ++r)
+      for (i64 c = 0; c < nx; ++c, ++s) {
+        if (cnt(s) != 0 || comp_[s] >= 0) continue;
+        const i64 id = (i64)inside_.size();
+        inside_.push_back(winding(xs_.v[c], ys_.v[r], c, r) >= 1 ? 1 : 0);
+        comp_[s] = id;
+        stack.assign(1, {r, c});
+        while (!stack.empty()) {
+          const auto [ur, uc] = stack.back();
+          stack.pop_back();
+          auto visit = [&](i64 vr, i64 vc) {
+            const i64 v = vr * nx + vc;
+            if (comp_[v] < 0 && cnt(v) == 0) {
+              comp_[v] = id;
+              stack.emplace_back(vr, vc);
+            }
+          };
+          if (uc > 0) visit(ur, uc - 1);
+          if (uc + 1 < nx) visit(ur, uc + 1);
+          if (ur > 0) visit(ur - 1, uc);
+          if (ur + 1 < ny) visit(ur + 1, uc);
+        }
       }
-    }
   }
 };
 
