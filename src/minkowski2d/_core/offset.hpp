@@ -76,6 +76,7 @@
 #include "minkowski.hpp"
 #include "offset_curve.hpp"
 #include "offset_prune.hpp"
+#include "offset_resolve.hpp"
 #include "overlay.hpp"
 
 namespace mk {
@@ -183,6 +184,7 @@ struct Params {
   bool outer = true;
   int join = ROUND;
   double limit = 2.0;
+  bool resolve = true;  // false: every curve with crossings goes to the overlay (tests)
 };
 
 struct Result {
@@ -191,6 +193,7 @@ struct Result {
   double least = 0;  // the least tolerance at this magnitude
   double eps = 0;    // the tolerance used
   int e0 = 0;        // the scale: coordinates were multiplied by 2^-e0
+  int path = DIRECT;  // how the region was found (Path)
   ov::Rings rings;   // the result (unscaled unless keep_scaled)
   std::vector<double> used_xy;  // with labels: the rings offset (scaled), offset side right
   std::vector<i64> used_off{0};
@@ -234,6 +237,7 @@ class Offsetter {
     s.grow = grow;
     s.join = p.join;
     s.limit = p.limit;
+    s.resolve = p.resolve;
     s.r = std::ldexp(r0, -e0);
     double dl = delta > 0 ? up(std::ldexp(delta, -e0)) : 0.0;
     if (e0 > 0) dl = up(dl + 0x1p-1073);  // scaling down may round subnormals
@@ -303,6 +307,7 @@ class Offsetter {
 
  private:
   Pruner pruner_;
+  Resolver resolver_;
   bool pruned_ = false;
   bool direct_ = false;  // the result is the one pruned curve itself
   std::vector<const std::vector<Pt>*> ring_;
@@ -343,6 +348,7 @@ class Offsetter {
     }
     // crossings: a single curve without any is the boundary; swallowed loops pruned
     bool one_simple = false;
+    bool listed = false;  // cross_ lists every crossing of the one curve, and nothing else meets
     for (std::size_t k = 0; k < nc && (prune || nc == 1); ++k) {
       Curve& cv = curves_[k];
       const bool clean = curve_crossings(cv.pts, cross_, cscr_, true);
@@ -351,22 +357,31 @@ class Offsetter {
       if (affected_.size() <= k) affected_.resize(k + 1);
       affected_[k].assign(ring_[k]->size(), 0);
       bool pr = pruner_.run(cv, *ring_[k], s, nullptr, affected_[k]);
-      one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
+      listed = curve_crossings(cv.pts, cross_, cscr_);
+      one_simple = listed && cross_.empty();
       // (a second pass starts away from the crossings the first left: a loop across its
       // start)
       for (int pass = 0; pass < 2 && !one_simple; ++pass) {
         bool pr2 = pruner_.run(cv, *ring_[k], s, &cross_, affected_[k]);
         if (!pr2) break;
         pr = true;
-        one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
+        listed = curve_crossings(cv.pts, cross_, cscr_);
+        one_simple = listed && cross_.empty();
       }
       pruned_ = pruned_ || pr;
     }
     direct_ = nc == 1 && one_simple;
     if (direct_) {
+      res.path = DIRECT;
       direct(curves_[0], s.grow, want_labels, res);
       return true;
     }
+    // a few crossings left: resolved without the overlay (its result exactly)
+    if (nc == 1 && listed && s.resolve && resolver_.run(curves_[0].pts, cross_, s.grow, res.rings)) {
+      res.path = RESOLVED;
+      return true;
+    }
+    res.path = OVERLAID;
     ov::Geo g;
     std::vector<ov::EdgeIn> in;
     std::vector<i64> line_label;

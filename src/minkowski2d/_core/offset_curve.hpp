@@ -30,6 +30,11 @@ enum Code : int {
   INPUT = 6,        // offset_polygons: not a valid polygonal set here (the reader decides)
 };
 
+// How the region of an offset was found (reported with each result, for the tests and the
+// benchmark): the one curve itself (or nothing to offset), the resolver of a few
+// crossings (offset_resolve.hpp), the overlay.
+enum Path : int { DIRECT = 0, RESOLVED = 1, OVERLAID = 2 };
+
 // label of a curve segment that is a detour through a vertex of the polygon
 constexpr i64 DETOUR = -(i64(1) << 62);
 
@@ -117,6 +122,7 @@ struct Setup {
   double eta = 0;     // inscribed: angle of the first/last point past the normals
   double limit = 2;   // miter limit
   double r_check = 0; // a pruned result's edges keep this distance from the polygon
+  bool resolve = true; // a curve with a few crossings left resolved without the overlay
 };
 
 // ------------------------------------------------------------------------------------
