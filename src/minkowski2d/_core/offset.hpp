@@ -586,12 +586,12 @@ class Offsetter {
     // extreme, never straight)
     R.xy.reserve(2 * n);
     i64 count = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t i = grow ? (lo + k) % n : (lo + n - k) % n;
-      if (orient(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) == 0) continue;  // straight on
+    for (std::size_t k = 0, i = lo; k < n; ++k, i = grow ? next_of(i, n) : prev_of(i, n)) {
+      const std::size_t ip = prev_of(i, n);
+      if (orient(p[ip], p[i], p[next_of(i, n)]) == 0) continue;  // straight on
       R.xy.push_back(p[i].x);
       R.xy.push_back(p[i].y);
-      if (want_labels) res.labels.push_back(grow ? cv.lab[i] : cv.lab[(i + n - 1) % n]);
+      if (want_labels) res.labels.push_back(grow ? cv.lab[i] : cv.lab[ip]);
       ++count;
     }
     R.ring_off.push_back(count);
@@ -663,12 +663,12 @@ class Offsetter {
     for (const Pt& q : pts) g.point(ov::dd(q.x), ov::dd(q.y));
     for (i64 i = 0; i < n; ++i) g.vert_point(p0 + i);
     for (i64 i = 0; i < n; ++i) {
-      i64 a = p0 + i, b = p0 + (i + 1) % n;
+      i64 a = p0 + i, b = p0 + next_of(i, n);
       if (ov::p_eq(g.pts[a], g.pts[b])) continue;
       i64 l = g.line(a, b);
       line_label.resize((std::size_t)l + 1, DETOUR);
       line_label[l] = lab[i];
-      in.push_back(ov::EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, 0});
+      in.push_back(ov::EdgeIn{l, v0 + i, v0 + next_of(i, n), w, 0});
     }
   }
 };

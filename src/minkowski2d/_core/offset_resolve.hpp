@@ -84,7 +84,7 @@ class Resolver {
   std::vector<i64> cvert_;  // crossing c -> its vertex in g_
   std::vector<i64> cl_;     // crossing c -> the lines of its two segments in g_
 
-  Pt pt(i64 i) const { return (*p_)[((i % m_) + m_) % m_]; }
+  Pt pt(i64 i) const { return (*p_)[wrap(i, m_)]; }  // -m <= i < 2m
 
   // The occurrences of the crossings along the curve from the segment of its least
   // point, each with its change of the winding number; those on one segment in order
@@ -184,11 +184,11 @@ class Resolver {
         const i64 len = ((b.seg - a.seg) % m_ + m_) % m_;  // curve points on the arc
         if (grow) {
           add(-1 - a.c, -1, a.seg);  // (its in-segment is set by the arc before)
-          for (i64 q = 1; q <= len; ++q) add((a.seg + q) % m_, (a.seg + q - 1) % m_, (a.seg + q) % m_);
+          for (i64 q = 1; q <= len; ++q) add(wrap(a.seg + q, m_), wrap(a.seg + q - 1, m_), wrap(a.seg + q, m_));
           t = out_[b.c];
         } else {
           add(-1 - b.c, -1, b.seg);
-          for (i64 q = len; q >= 1; --q) add((a.seg + q) % m_, (a.seg + q) % m_, (a.seg + q - 1) % m_);
+          for (i64 q = len; q >= 1; --q) add(wrap(a.seg + q, m_), wrap(a.seg + q, m_), wrap(a.seg + q - 1, m_));
           t = out_[a.c];
         }
         if (t < 0) return false;
