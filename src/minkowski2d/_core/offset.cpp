@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <memory>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "bind.hpp"
@@ -41,6 +42,7 @@ struct Worker {
   mk::off::Offsetter off;
   CheckScratch cs;
   std::vector<mk::ms::Ring> rings;
+  mk::off::Result one;  // offset_one's result (its buffers reused)
 };
 std::unique_ptr<Worker>& worker_slot() {
   thread_local std::unique_ptr<Worker> w;
@@ -69,7 +71,7 @@ mk::off::Params params(double distance, double tolerance, double default_rel, bo
 }
 
 // The results as closed rings: (xy (M, 2), ring_off, poly_off, geom_off (G + 1,),
-// info (G, 4): status, code, least tolerance, tolerance used; extra).
+// info (G, 5): status, code, least tolerance, tolerance used, path; extra).
 nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
   const i64 ng = (i64)res.size();
   i64 rows = 0, nrings = 0, npolys = 0;
@@ -82,7 +84,7 @@ nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
   i64* oro = alloc<i64>(nrings + 1);
   i64* opo = alloc<i64>(npolys + 1);
   i64* ogo = alloc<i64>(ng + 1);
-  double* oin = alloc<double>(4 * ng);  // status, code, least, eps
+  double* oin = alloc<double>(5 * ng);  // status, code, least, eps, path
   std::vector<i64> lab;
   i64 row = 0, ring = 0, poly = 0;
   oro[0] = 0;
@@ -90,10 +92,11 @@ nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
   ogo[0] = 0;
   for (i64 g = 0; g < ng; ++g) {
     const mk::off::Result& r = res[(std::size_t)g];
-    oin[4 * g] = r.status;
-    oin[4 * g + 1] = r.code;
-    oin[4 * g + 2] = r.least;
-    oin[4 * g + 3] = r.eps;
+    oin[5 * g] = r.status;
+    oin[5 * g + 1] = r.code;
+    oin[5 * g + 2] = r.least;
+    oin[5 * g + 3] = r.eps;
+    oin[5 * g + 4] = r.path;
     const auto& R = r.rings;
     const i64 rr = (i64)R.ring_off.size() - 1;
     for (i64 k = 0; k < rr; ++k) {
@@ -120,21 +123,24 @@ nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
   }
   return nb::make_tuple(owned(oxy, (std::size_t)rows, 2), owned(oro, (std::size_t)nrings + 1, 0),
                         owned(opo, (std::size_t)npolys + 1, 0), owned(ogo, (std::size_t)ng + 1, 0),
-                        owned(oin, (std::size_t)ng, 4), extra);
+                        owned(oin, (std::size_t)ng, 5), extra);
 }
 
 // offset_rings(xy (N, 2), ring_off (R + 1,), ring_hole (R,), geom_off (G + 1,), unite (G,),
 //              delta (G,), distance, tolerance (NaN: default), default_rel, outer, join,
-//              miter_limit, labels=False, threads=1)
-//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), info (G, 4):
-//       status, code, least tolerance, tolerance used; extra)
+//              miter_limit, labels=False, threads=1, resolve=True)
+//   -> (xy (M, 2) closed rings, ring_off, poly_off, geom_off (G + 1,), info (G, 5):
+//       status, code, least tolerance, tolerance used, path (OFFSET_DIRECT, _RESOLVED,
+//       _OVERLAID); extra)
 // Geometry g is made of the rings ring_off[geom_off[g]] ..; its result is the polygons
 // poly_off[geom_off[g]] .. of the output. With labels (one geometry only), extra is
 // (label per output row, the rings offset (scaled, offset side right) as xy and offsets,
-// e0): the output is then scaled by 2^-e0.
+// e0): the output is then scaled by 2^-e0. resolve=False: curves with crossings all go to
+// the overlay (the tests compare the resolver with it).
 nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In1<i64> UN,
                        In1<double> DL, double distance, double tolerance, double default_rel,
-                       bool outer, int join, double limit, bool labels, int threads) {
+                       bool outer, int join, double limit, bool labels, int threads,
+                       bool resolve) {
   const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, ng = (i64)GO.shape(0) - 1;
   if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
   const i64 *ro = RO.data(), *go = GO.data(), *rh = RH.data(), *un = UN.data();
@@ -150,7 +156,8 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   for (i64 q = 0; q < 2 * n; ++q)
     if (!(xy[q] - xy[q] == 0)) throw nb::value_error("offset: non-finite coordinate");
   if (labels && ng != 1) throw nb::value_error("offset: labels for one geometry only");
-  const mk::off::Params p = params(distance, tolerance, default_rel, outer, join, limit);
+  mk::off::Params p = params(distance, tolerance, default_rel, outer, join, limit);
+  p.resolve = resolve;
   std::vector<mk::off::Result> res((std::size_t)ng);
   {
     nb::gil_scoped_release nogil;
@@ -273,16 +280,74 @@ nb::tuple offset_polygons(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> GO,
   return pack(res, false);
 }
 
+// offset_one(xy (n, 2), distance, tolerance (NaN: the default), default_rel, outer, join,
+//            miter_limit) -> (xy (M, 2) closed rings, ring_off, poly_off), or None
+// One polygon without holes, as shapely.get_coordinates gives it: the offset of
+// offset_polygons for one geometry, with the fewest conversions (a single call's Python
+// and binding cost more than a small part's offset). Taken only when the coordinates are
+// one ring closed at its end and nowhere before (a polygon with holes closes its shell
+// earlier), valid (valid_parts) and offset without a code or status; None otherwise:
+// the caller's general path reads, offsets and reports it.
+nb::object offset_one(In2<double> XY, double distance, double tolerance, double default_rel,
+                      bool outer, int join, double limit) {
+  const i64 n = (i64)XY.shape(0);
+  if (XY.shape(1) != 2 || n < 4) return nb::none();
+  const double* xy = XY.data();
+  Worker& wk = worker();
+  mk::off::Result& out = wk.one;
+  bool ok = false;
+  {
+    nb::gil_scoped_release nogil;
+    const double x0 = xy[0], y0 = xy[1];
+    bool one = xy[2 * n - 2] == x0 && xy[2 * n - 1] == y0;
+    for (i64 i = 1; i + 1 < n && one; ++i) one = !(xy[2 * i] == x0 && xy[2 * i + 1] == y0);
+    const i64 ro[2] = {0, n}, po[2] = {0, 1};
+    bool unite = false;
+    if (one && valid_parts(xy, ro, 1, po, 1, 0, wk.cs, unite)) {
+      wk.rings.clear();
+      wk.rings.push_back(mk::ms::make_ring(xy, n, false));
+      wk.off.run(wk.rings, false, 0.0, params(distance, tolerance, default_rel, outer, join, limit),
+                 false, out);
+      ok = out.status == mk::OK && out.code == mk::off::FINE;
+    }
+  }
+  if (!ok) {
+    release_large();
+    return nb::none();
+  }
+  const auto& R = out.rings;
+  const i64 nr = (i64)R.ring_off.size() - 1, rows = (i64)R.xy.size() / 2 + nr;
+  double* oxy = alloc<double>(2 * rows);
+  i64* oro = alloc<i64>(nr + 1);
+  i64 row = 0;
+  oro[0] = 0;
+  for (i64 k = 0; k < nr; ++k) {  // closed: each ring's first vertex repeated
+    const i64 a = R.ring_off[k], b = R.ring_off[k + 1];
+    std::memcpy(oxy + 2 * row, R.xy.data() + 2 * a, sizeof(double) * 2 * (b - a));
+    row += b - a;
+    oxy[2 * row] = R.xy[2 * a];
+    oxy[2 * row + 1] = R.xy[2 * a + 1];
+    oro[k + 1] = ++row;
+  }
+  nb::tuple got = nb::make_tuple(owned(oxy, (std::size_t)rows, 2),
+                                owned(oro, (std::size_t)nr + 1, 0),
+                                to_numpy(R.poly_off, R.poly_off.size(), 0));
+  release_large();  // (may free `out`)
+  return got;
+}
+
 }  // namespace
 
 void bind_offset(nb::module_& m) {
   m.def("offset_polygons", &offset_polygons, "xy"_a.noconvert(), "ring_off"_a.noconvert(),
         "poly_off"_a.noconvert(), "geom_off"_a.noconvert(), "distance"_a.noconvert(),
         "tolerance"_a.noconvert(), "default_rel"_a, "outer"_a, "join"_a, "miter_limit"_a, "delta"_a, "threads"_a = 1);
+  m.def("offset_one", &offset_one, "xy"_a.noconvert(), "distance"_a, "tolerance"_a,
+        "default_rel"_a, "outer"_a, "join"_a, "miter_limit"_a);
   m.def("offset_rings", &offset_rings, "xy"_a.noconvert(), "ring_off"_a.noconvert(),
         "ring_hole"_a.noconvert(), "geom_off"_a.noconvert(), "unite"_a.noconvert(),
         "delta"_a.noconvert(), "distance"_a, "tolerance"_a, "default_rel"_a, "outer"_a,
-        "join"_a, "miter_limit"_a, "labels"_a = false, "threads"_a = 1);
+        "join"_a, "miter_limit"_a, "labels"_a = false, "threads"_a = 1, "resolve"_a = true);
   m.attr("OFFSET_ROUND") = (int)mk::off::ROUND;
   m.attr("OFFSET_MITER") = (int)mk::off::MITER;
   m.attr("OFFSET_SQUARE") = (int)mk::off::SQUARE;
@@ -299,6 +364,9 @@ void bind_offset(nb::module_& m) {
   m.attr("OFFSET_OVERFLOWS") = (int)mk::off::OVERFLOWS;
   m.attr("OFFSET_INPUT") = (int)mk::off::INPUT;
   m.attr("OFFSET_DETOUR") = (long long)mk::off::DETOUR;
+  m.attr("OFFSET_DIRECT") = (int)mk::off::DIRECT;
+  m.attr("OFFSET_RESOLVED") = (int)mk::off::RESOLVED;
+  m.attr("OFFSET_OVERLAID") = (int)mk::off::OVERLAID;
 }
 
 }  // namespace mk_bind

@@ -76,6 +76,7 @@
 #include "minkowski.hpp"
 #include "offset_curve.hpp"
 #include "offset_prune.hpp"
+#include "offset_resolve.hpp"
 #include "overlay.hpp"
 
 namespace mk {
@@ -183,6 +184,7 @@ struct Params {
   bool outer = true;
   int join = ROUND;
   double limit = 2.0;
+  bool resolve = true;  // false: every curve with crossings goes to the overlay (tests)
 };
 
 struct Result {
@@ -191,6 +193,7 @@ struct Result {
   double least = 0;  // the least tolerance at this magnitude
   double eps = 0;    // the tolerance used
   int e0 = 0;        // the scale: coordinates were multiplied by 2^-e0
+  int path = DIRECT;  // how the region was found (Path)
   ov::Rings rings;   // the result (unscaled unless keep_scaled)
   std::vector<double> used_xy;  // with labels: the rings offset (scaled), offset side right
   std::vector<i64> used_off{0};
@@ -234,6 +237,7 @@ class Offsetter {
     s.grow = grow;
     s.join = p.join;
     s.limit = p.limit;
+    s.resolve = p.resolve;
     s.r = std::ldexp(r0, -e0);
     double dl = delta > 0 ? up(std::ldexp(delta, -e0)) : 0.0;
     if (e0 > 0) dl = up(dl + 0x1p-1073);  // scaling down may round subnormals
@@ -303,6 +307,7 @@ class Offsetter {
 
  private:
   Pruner pruner_;
+  Resolver resolver_;
   bool pruned_ = false;
   bool direct_ = false;  // the result is the one pruned curve itself
   std::vector<const std::vector<Pt>*> ring_;
@@ -343,6 +348,7 @@ class Offsetter {
     }
     // crossings: a single curve without any is the boundary; swallowed loops pruned
     bool one_simple = false;
+    bool listed = false;  // cross_ lists every crossing of the one curve, and nothing else meets
     for (std::size_t k = 0; k < nc && (prune || nc == 1); ++k) {
       Curve& cv = curves_[k];
       const bool clean = curve_crossings(cv.pts, cross_, cscr_, true);
@@ -351,22 +357,31 @@ class Offsetter {
       if (affected_.size() <= k) affected_.resize(k + 1);
       affected_[k].assign(ring_[k]->size(), 0);
       bool pr = pruner_.run(cv, *ring_[k], s, nullptr, affected_[k]);
-      one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
+      listed = curve_crossings(cv.pts, cross_, cscr_);
+      one_simple = listed && cross_.empty();
       // (a second pass starts away from the crossings the first left: a loop across its
       // start)
       for (int pass = 0; pass < 2 && !one_simple; ++pass) {
         bool pr2 = pruner_.run(cv, *ring_[k], s, &cross_, affected_[k]);
         if (!pr2) break;
         pr = true;
-        one_simple = curve_crossings(cv.pts, cross_, cscr_) && cross_.empty();
+        listed = curve_crossings(cv.pts, cross_, cscr_);
+        one_simple = listed && cross_.empty();
       }
       pruned_ = pruned_ || pr;
     }
     direct_ = nc == 1 && one_simple;
     if (direct_) {
+      res.path = DIRECT;
       direct(curves_[0], s.grow, want_labels, res);
       return true;
     }
+    // a few crossings left: resolved without the overlay (its result exactly)
+    if (nc == 1 && listed && s.resolve && resolver_.run(curves_[0].pts, cross_, s.grow, res.rings)) {
+      res.path = RESOLVED;
+      return true;
+    }
+    res.path = OVERLAID;
     ov::Geo g;
     std::vector<ov::EdgeIn> in;
     std::vector<i64> line_label;
@@ -571,12 +586,12 @@ class Offsetter {
     // extreme, never straight)
     R.xy.reserve(2 * n);
     i64 count = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t i = grow ? (lo + k) % n : (lo + n - k) % n;
-      if (orient(p[(i + n - 1) % n], p[i], p[(i + 1) % n]) == 0) continue;  // straight on
+    for (std::size_t k = 0, i = lo; k < n; ++k, i = grow ? next_of(i, n) : prev_of(i, n)) {
+      const std::size_t ip = prev_of(i, n);
+      if (orient(p[ip], p[i], p[next_of(i, n)]) == 0) continue;  // straight on
       R.xy.push_back(p[i].x);
       R.xy.push_back(p[i].y);
-      if (want_labels) res.labels.push_back(grow ? cv.lab[i] : cv.lab[(i + n - 1) % n]);
+      if (want_labels) res.labels.push_back(grow ? cv.lab[i] : cv.lab[ip]);
       ++count;
     }
     R.ring_off.push_back(count);
@@ -648,12 +663,12 @@ class Offsetter {
     for (const Pt& q : pts) g.point(ov::dd(q.x), ov::dd(q.y));
     for (i64 i = 0; i < n; ++i) g.vert_point(p0 + i);
     for (i64 i = 0; i < n; ++i) {
-      i64 a = p0 + i, b = p0 + (i + 1) % n;
+      i64 a = p0 + i, b = p0 + next_of(i, n);
       if (ov::p_eq(g.pts[a], g.pts[b])) continue;
       i64 l = g.line(a, b);
       line_label.resize((std::size_t)l + 1, DETOUR);
       line_label[l] = lab[i];
-      in.push_back(ov::EdgeIn{l, v0 + i, v0 + (i + 1) % n, w, 0});
+      in.push_back(ov::EdgeIn{l, v0 + i, v0 + next_of(i, n), w, 0});
     }
   }
 };

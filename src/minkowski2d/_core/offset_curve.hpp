@@ -30,6 +30,11 @@ enum Code : int {
   INPUT = 6,        // offset_polygons: not a valid polygonal set here (the reader decides)
 };
 
+// How the region of an offset was found (reported with each result, for the tests and the
+// benchmark): the one curve itself (or nothing to offset), the resolver of a few
+// crossings (offset_resolve.hpp), the overlay.
+enum Path : int { DIRECT = 0, RESOLVED = 1, OVERLAID = 2 };
+
 // label of a curve segment that is a detour through a vertex of the polygon
 constexpr i64 DETOUR = -(i64(1) << 62);
 
@@ -101,6 +106,18 @@ struct Pow2 {
 inline double up(double x) { return std::nextafter(x, INFINITY); }
 inline double down(double x) { return std::nextafter(x, -INFINITY); }
 
+// The next and previous index around a ring of n, for 0 <= i < n, and i modulo n for
+// -n <= i < 2n: without a division (the loops over curves take one per point)
+template <class I>
+inline I next_of(I i, I n) {
+  return i + 1 == n ? 0 : i + 1;
+}
+template <class I>
+inline I prev_of(I i, I n) {
+  return i == 0 ? n - 1 : i - 1;
+}
+inline i64 wrap(i64 i, i64 n) { return i < 0 ? i + n : (i >= n ? i - n : i); }
+
 // ------------------------------------------------------------------------------------
 // parameters of one offset (scaled so that every coordinate is below 2)
 
@@ -117,6 +134,7 @@ struct Setup {
   double eta = 0;     // inscribed: angle of the first/last point past the normals
   double limit = 2;   // miter limit
   double r_check = 0; // a pruned result's edges keep this distance from the polygon
+  bool resolve = true; // a curve with a few crossings left resolved without the overlay
 };
 
 // ------------------------------------------------------------------------------------
@@ -131,8 +149,8 @@ inline void drop_straight(std::vector<Pt>& v) {
   std::vector<char> alive(n, 1);
   std::vector<std::size_t> prv(n), nxt(n), stack;
   for (std::size_t i = 0; i < n; ++i) {
-    prv[i] = (i + n - 1) % n;
-    nxt[i] = (i + 1) % n;
+    prv[i] = prev_of(i, n);
+    nxt[i] = next_of(i, n);
     stack.push_back(i);
   }
   std::size_t left = n;
@@ -205,7 +223,7 @@ class Curve {
     ex_.resize(n);
     ey_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Pt &a = v[i], &b = v[(i + 1) % n];
+      const Pt &a = v[i], &b = v[next_of(i, n)];
       double dx = b.x - a.x, dy = b.y - a.y, L = std::hypot(dx, dy);
       ex_[i] = dx / L;
       ey_[i] = dy / L;
@@ -291,7 +309,7 @@ class Curve {
     auto last = [&](std::size_t j) { return chain_[cs_[j + 1] - 1]; };
     for (std::size_t j = 0; j < n; ++j) {
       if (fan_[j]) continue;
-      const std::size_t jp = (j + n - 1) % n, jn = (j + 1) % n;
+      const std::size_t jp = prev_of(j, n), jn = next_of(j, n);
       const Pt V = v[j], P = v[jp], N = v[jn];
       if (orient(P, V, N) >= 0) continue;  // a detour at a convex vertex: not trimmed
       const Pt Sin = last(jp), Fin = chain_[cs_[j]], Sout = chain_[cs_[j] + 2], Fout = first(jn);
@@ -346,11 +364,11 @@ class Curve {
 
   void vertex(const std::vector<Pt>& v, std::size_t j, const Setup& s) {
     const std::size_t n = v.size();
-    const std::size_t ji = (j + n - 1) % n;  // edge in
+    const std::size_t ji = prev_of(j, n), jn = next_of(j, n);  // edge in, next vertex
     const Pt V = v[j];
     double eix = ex_[ji], eiy = ey_[ji], eox = ex_[j], eoy = ey_[j];
     double nix = eiy, niy = -eix, nox = eoy, noy = -eox;  // right normals
-    int o = n == 2 ? 0 : orient(v[ji], V, v[(j + 1) % n]);
+    int o = n == 2 ? 0 : orient(v[ji], V, v[jn]);
     bool convex = o >= 0;  // o == 0 after cleaning: a spike (exterior angle pi)
     double theta = 0;
     if (convex) {
@@ -388,7 +406,7 @@ class Curve {
     // on the normals, rounded, are kept when they already lie on the right side (axis-
     // parallel edges: exactly on it); else they are pushed along the edge by mc.
     const double rho = s.join == ROUND ? s.rho : s.r;
-    const Pt P = v[ji], N = v[(j + 1) % n];
+    const Pt P = v[ji], N = v[jn];
     Pt F{V.x + rho * nix, V.y + rho * niy}, S{V.x + rho * nox, V.y + rho * noy};
     if (s.join == ROUND) {
       if (dot_sign(V, F, P, V) < 0) F = Pt{F.x + s.mc * eix, F.y + s.mc * eiy};
@@ -451,9 +469,9 @@ class Curve {
   void certify(const std::vector<Pt>& v, const Setup& s) {
     const std::size_t n = v.size();
     for (std::size_t i = 0; i < n && certified; ++i) {
-      const Pt &a = v[i], &b = v[(i + 1) % n];
+      const std::size_t jb = next_of(i, n);
+      const Pt &a = v[i], &b = v[jb];
       const Pt Sa = chain_[cs_[i + 1] - 1];  // the end of a's chain
-      const std::size_t jb = (i + 1) % n;
       const Pt Fb = chain_[cs_[jb]];
       if (orient(a, b, Sa) >= 0 || line_dist_cmp(a, b, Sa, s.t_cov) < 0 ||
           dot_sign(a, Sa, a, b) > 0)
@@ -463,13 +481,13 @@ class Curve {
         certified = false;
     }
     for (std::size_t j = 0; j < n && certified; ++j) {
-      const Pt V = v[j], P = v[(j + n - 1) % n];
+      const Pt V = v[j], P = v[prev_of(j, n)];
       std::size_t k0 = cs_[j], k1 = cs_[j + 1];
       if (!fan_[j]) {
         const Pt &F = chain_[k0], &S = chain_[k0 + 2];
         if (dist_cmp(V, F, s.t_up) > 0 || dist_cmp(V, S, s.t_up) > 0) certified = false;
         // at a convex vertex (or a spike) F must be at or ahead of S around V
-        int o = n == 2 ? 0 : orient(P, V, v[(j + 1) % n]);
+        int o = n == 2 ? 0 : orient(P, V, v[next_of(j, n)]);
         if (o >= 0 && orient(V, S, F) < 0) certified = false;
         if (o == 0 && n >= 2) certified = false;  // a spike always gets a fan
         continue;
@@ -526,7 +544,7 @@ inline double fill_notches(std::vector<std::vector<Pt>>& rings, double t) {
     const std::size_t n = v.size();
     if (n < 5) continue;
     for (std::size_t j = 0; j < n; ++j) {
-      const Pt &P = v[(j + n - 1) % n], &V = v[j], &N = v[(j + 1) % n];
+      const Pt &P = v[prev_of(j, n)], &V = v[j], &N = v[next_of(j, n)];
       if (orient(P, V, N) >= 0 || line_dist_cmp(P, N, V, t) > 0) continue;
       cand[first[r] + j] = 1;
       any = true;
@@ -549,7 +567,7 @@ inline double fill_notches(std::vector<std::vector<Pt>>& rings, double t) {
     const std::size_t n = v.size();
     for (std::size_t j = 0; j < n; ++j) {
       if (!cand[first[r] + j]) continue;
-      const Pt &P = v[(j + n - 1) % n], &V = v[j], &N = v[(j + 1) % n];
+      const Pt &P = v[prev_of(j, n)], &V = v[j], &N = v[next_of(j, n)];
       x0.push_back(std::min({P.x, V.x, N.x}));
       x1.push_back(std::max({P.x, V.x, N.x}));
       y0.push_back(std::min({P.y, V.y, N.y}));
@@ -565,7 +583,7 @@ inline double fill_notches(std::vector<std::vector<Pt>>& rings, double t) {
     if (!cand[first[r] + j]) return;  // already refused
     const auto& v = rings[r];
     const std::size_t n = v.size();
-    const std::size_t jp = (j + n - 1) % n, jn = (j + 1) % n;
+    const std::size_t jp = prev_of(j, n), jn = next_of(j, n);
     if (pt.first == r && (pt.second == jp || pt.second == j || pt.second == jn)) return;
     const Pt &P = v[jp], &V = v[j], &N = v[jn], &q = rings[pt.first][pt.second];
     // the triangle P, V, N turns clockwise: q is in it (closed) when on no side's left
@@ -588,7 +606,7 @@ inline double fill_notches(std::vector<std::vector<Pt>>& rings, double t) {
       d[j] = 1;
       --left;
       removed = true;
-      const Pt &P = v[(j + n - 1) % n], &V = v[j], &N = v[(j + 1) % n];
+      const Pt &P = v[prev_of(j, n)], &V = v[j], &N = v[next_of(j, n)];
       const double dx = N.x - P.x, dy = N.y - P.y;
       hb = std::max(hb, std::fabs(dx * (V.y - P.y) - dy * (V.x - P.x)) / std::hypot(dx, dy));
     }

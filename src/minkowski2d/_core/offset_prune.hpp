@@ -68,6 +68,7 @@ namespace off {
 constexpr i64 PRUNE_PATH = 256;
 constexpr int PRUNE_TRIES = 4;
 constexpr i64 PRUNE_WINDOW = 24;  // the local pass: stack segments tested per segment
+constexpr i64 PRUNE_BLOCK = 8;    // ... their boxes tested a block at a time first
 constexpr i64 PRUNE_EARS = 128;  // ear clipping: pieces of at most this many points
 constexpr i64 PRUNE_NEAR = 4;    // a triangle near a short edge: the edges this far along
 
@@ -75,7 +76,7 @@ constexpr i64 PRUNE_NEAR = 4;    // a triangle near a short edge: the edges this
 inline bool near_feature(const std::vector<Pt>& v, i64 f, Pt p, double t) {
   const i64 n = (i64)v.size(), j = f >> 1;
   if (f & 1) return dist_cmp(v[j], p, t) <= 0;
-  return seg_dist_cmp(v[j], v[(j + 1) % n], p, t) <= 0;
+  return seg_dist_cmp(v[j], v[next_of(j, n)], p, t) <= 0;
 }
 
 // Does feature k lie in edge feature e (k == e, or k is an end vertex of e)?
@@ -83,7 +84,7 @@ inline bool feature_in(i64 k, i64 e, i64 n) {
   if (k == e) return true;
   if (!(k & 1)) return false;
   const i64 j = k >> 1, ej = e >> 1;
-  return j == ej || j == (ej + 1) % n;
+  return j == ej || j == next_of(ej, n);
 }
 
 // Do the segments ab and cd cross properly (one point inside both, exactly)?
@@ -123,9 +124,10 @@ class Pruner {
     push_point(cv.pts[s0], cv.anc[s0], cv.pf[s0]);
     bool cut = false;
     for (i64 t = 0; t < m; ++t) {
-      const i64 k = (s0 + t) % m, k1 = (k + 1) % m;
+      const i64 k = s0 + t < m ? s0 + t : s0 + t - m, k1 = next_of(k, m);
       // anchors unwrapped: they grow by 0 or 1 per segment of the curve
-      const i64 ue = qa_.back() + (((cv.anc[k1] - cv.anc[k]) % n) + n) % n;
+      const i64 da = cv.anc[k1] - cv.anc[k];
+      const i64 ue = qa_.back() + (da < 0 ? da + n : da);
       start_segment(k, cv.sf[k]);
       for (int tries = PRUNE_TRIES; tries > 0 && candidates(k, cv.pts[k1]);)
         if (try_cuts(k, cv.pts[k1], ue, cv.pf[k1], cv.sf[k], tries)) {
@@ -196,7 +198,7 @@ class Pruner {
     part_.resize(part_off_[m]);
     cand_.assign(part_off_.begin(), part_off_.end() - 1);
     for (i64 t = 0; t < m; ++t) {
-      const i64 j = (s0 + t) % m;
+      const i64 j = s0 + t < m ? s0 + t : s0 + t - m;
       for (i64 q = part_off_[j]; q < part_off_[j + 1]; ++q) part_[cand_[fill_[q]]++] = j;
     }
   }
@@ -210,6 +212,11 @@ class Pruner {
   // the stack: points, their anchors (unwrapped: ring vertex anchor mod n) and features;
   // segment e runs Q_[e] -> Q_[e + 1]
   std::vector<Pt> Q_;
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  std::vector<Box> qbox_;  // the box of stack segment e (Q_[e] -> Q_[e + 1])
+  std::vector<Box> qblock_;  // a box holding those of segments PRUNE_BLOCK k ..
   std::vector<i64> qa_, qpf_, qsf_, qorig_;
   // scratch of the certificates
   std::vector<Pt> g_;
@@ -218,6 +225,22 @@ class Pruner {
     Q_.push_back(p);
     qa_.push_back(a);
     qpf_.push_back(f);
+    const std::size_t e = Q_.size() - 1;  // segment e - 1 now ends at p: its box
+    if (e == 0) return;
+    const Pt q = Q_[e - 1];
+    qbox_.resize(e);
+    const Box b{std::min(q.x, p.x), std::max(q.x, p.x), std::min(q.y, p.y), std::max(q.y, p.y)};
+    qbox_[e - 1] = b;
+    // the block's box: reset by its first segment, else widened (a block cut back keeps
+    // the boxes of its segments gone: a larger box, never a smaller one)
+    const std::size_t k = (e - 1) / PRUNE_BLOCK;
+    if (qblock_.size() <= k) qblock_.resize(k + 1);
+    Box& B = qblock_[k];
+    if ((e - 1) % PRUNE_BLOCK == 0) {
+      B = b;
+    } else {
+      B = Box{std::min(B.x0, b.x0), std::max(B.x1, b.x1), std::min(B.y0, b.y0), std::max(B.y1, b.y1)};
+    }
   }
   void start_segment(i64 k, i64 f) {
     const std::size_t e = Q_.size() - 1;
@@ -237,12 +260,18 @@ class Pruner {
       const Pt c = Q_[top];
       const double x0 = std::min(c.x, end.x), x1 = std::max(c.x, end.x),
                    y0 = std::min(c.y, end.y), y1 = std::max(c.y, end.y);
-      for (i64 e = top - 2; e >= 0 && e >= top - PRUNE_WINDOW; --e) {
-        const Pt &a = Q_[e], &b = Q_[e + 1];
-        if (std::max(a.x, b.x) < x0 || std::min(a.x, b.x) > x1 || std::max(a.y, b.y) < y0 ||
-            std::min(a.y, b.y) > y1)
+      // (whole blocks apart skipped; the four tests without branches: a hit is rare, and
+      // its one branch predicted)
+      auto apart = [&](const Box& b) {
+        return (b.x1 < x0) | (b.x0 > x1) | (b.y1 < y0) | (b.y0 > y1);
+      };
+      const Box* bx = qbox_.data();
+      for (i64 e = top - 2, lo = std::max<i64>(0, top - PRUNE_WINDOW); e >= lo; --e) {
+        if (e % PRUNE_BLOCK == PRUNE_BLOCK - 1 && apart(qblock_[e / PRUNE_BLOCK])) {
+          e -= PRUNE_BLOCK - 1;
           continue;
-        cand_.push_back(e);
+        }
+        if (!apart(bx[e])) cand_.push_back(e);
       }
       return !cand_.empty();
     }
@@ -297,7 +326,7 @@ class Pruner {
   double feature_d2(i64 f, Pt x) const {
     const std::vector<Pt>& v = *v_;
     const i64 j = f >> 1;
-    const Pt a = v[j], b = (f & 1) ? v[j] : v[(j + 1) % n_];
+    const Pt a = v[j], b = (f & 1) ? v[j] : v[next_of(j, n_)];
     const double dx = b.x - a.x, dy = b.y - a.y, px = x.x - a.x, py = x.y - a.y;
     const double L = dx * dx + dy * dy, u = L > 0 ? std::clamp((px * dx + py * dy) / L, 0.0, 1.0) : 0.0;
     const double ex = px - u * dx, ey = py - u * dy;
@@ -605,7 +634,8 @@ class Pruner {
       for (int q = 0; q < nb; ++q)
         for (int sg = -1; sg <= 1; sg += 2) {
           if (w == 0 && sg == 1) continue;
-          const i64 j = (((base[q] >> 1) + sg * w) % n_ + n_) % n_, e = edge_feature(j);
+          const i64 j0 = (base[q] >> 1) + sg * w;
+          const i64 j = n_ > PRUNE_NEAR ? wrap(j0, n_) : (j0 % n_ + n_) % n_, e = edge_feature(j);
           bool all = true;
           for (int u = 0; u < 3 && all; ++u) all = known(u, e) || feature_d2(e, tp[u]) <= lim;
           if (!all) continue;
@@ -653,7 +683,7 @@ struct Chains {
   // The segments p[i] -> p[(i + 1) % n] of a closed ring.
   void add_ring(const Pt* p, i64 n) {
     for (i64 i = 0; i < n; ++i) {
-      const Pt &u = p[i], &w = p[(i + 1) % n];
+      const Pt &u = p[i], &w = p[next_of(i, n)];
       const int sx = (w.x > u.x) - (w.x < u.x), sy = (w.y > u.y) - (w.y < u.y);
       if (i == 0 || sx == 0 || sx != dx.back() || (sy != 0 && dy.back() != 0 && sy != dy.back())) {
         start.push_back((i64)a.size());
@@ -738,7 +768,8 @@ inline bool curve_crossings(const std::vector<Pt>& p, std::vector<std::pair<i64,
   if (n < 3) return false;
   bool other = false;
   for (i64 i = 0; i < n; ++i) {
-    const Pt &a = p[i], &b = p[(i + 1) % n], &c = p[(i + 2) % n];
+    const i64 i1 = next_of(i, n);
+    const Pt &a = p[i], &b = p[i1], &c = p[next_of(i1, n)];
     if (a.x == b.x && a.y == b.y) return false;
     if (orient(a, b, c) == 0 && dot_sign(a, b, b, c) < 0) other = true;  // folds back
   }

@@ -44,6 +44,7 @@ from .._core._ext import (  # the kernels: the whole surface between Python and 
     merge_record_i,
     normalize_f,
     normalize_i,
+    offset_one,
     offset_polygons,
     offset_rings,
     orient_f,
@@ -88,6 +89,7 @@ __all__ = [
     "merge_record_i",
     "normalize_f",
     "normalize_i",
+    "offset_one",
     "offset_polygons",
     "offset_rings",
     "orient_f",
@@ -196,6 +198,10 @@ OFFSET_UNDERFLOW: int = _ext.OFFSET_UNDERFLOW
 OFFSET_OVERFLOWS: int = _ext.OFFSET_OVERFLOWS
 OFFSET_INPUT: int = _ext.OFFSET_INPUT
 OFFSET_DETOUR: int = _ext.OFFSET_DETOUR
+#: how an offset's region was found (info column 4): the one curve, the resolver, the overlay
+OFFSET_DIRECT: int = _ext.OFFSET_DIRECT
+OFFSET_RESOLVED: int = _ext.OFFSET_RESOLVED
+OFFSET_OVERLAID: int = _ext.OFFSET_OVERLAID
 #: The navigation mesh's build codes (navmesh.hpp).
 MESH_OK: int = _ext.MESH_OK
 PLAN_OK: int = _ext.PLAN_OK

@@ -169,6 +169,33 @@ def _fast(obj: Any) -> bool:
     )
 
 
+def _polygon_type() -> type:
+    import shapely
+
+    return shapely.Polygon
+
+
+def _one_polygon(
+    polygon: Any, d: float, tol: float | None, approx: str, join: str, lim: float
+) -> Any:
+    """The offset of a shapely Polygon by the core's entry for one ring (its coordinates
+    read by one GEOS call, the result built by one ``from_ragged_array``), or None: a
+    polygon with holes, an invalid one, an error (the general path reads, offsets and
+    reports it)."""
+    import shapely
+
+    got = core.offset_one(
+        shapely.get_coordinates(polygon), d, math.nan if tol is None else tol,
+        DEFAULT_TOLERANCE, approx == "outer", _JOIN_CODE[join], lim,
+    )  # fmt: skip
+    if got is None:
+        return None
+    polys = shapely.from_ragged_array(shapely.GeometryType.POLYGON, got[0], got[1:])
+    if len(polys) == 1:
+        return polys[0]
+    return shapely.multipolygons(polys) if len(polys) else shapely.Polygon()
+
+
 def _ring_arrays(a: np.ndarray) -> tuple:
     """A float64 (n, 2) ring as the arrays of offset_polygons."""
     xy = np.ascontiguousarray(a)
@@ -317,7 +344,7 @@ def _batch(polys: list, fn_args: tuple, threads: int = 1) -> list:
     per = np.ndim(d) or np.ndim(tol)
     idx = [k for k, g in enumerate(polys) if g is not None]
     fast = np.array([k for k in idx if _fast(polys[k])], np.int64)
-    info = np.zeros((len(polys), 4))
+    info = np.zeros((len(polys), 5))
     res_fast: Any = None
     if len(fast):
         geoms = np.empty(len(fast), dtype=object)
@@ -551,6 +578,10 @@ def offset(
         # one polygon: the shortest way through (read and checked by the core itself when
         # shapely or a float64 ring, else by the reader)
         extra = _distance_error(distance, d)
+        if extra == 0 and type(polygon) is _polygon_type():
+            got = _one_polygon(polygon, d, tol, approx, join, lim)
+            if got is not None:
+                return got
         if _fast(polygon):
             one: Any = [polygon]  # a list: polygon_arrays reads its one member directly
             arrays = polygon_arrays(one)
