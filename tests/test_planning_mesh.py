@@ -616,6 +616,24 @@ def test_zero_width_network_bends_branches_and_meets_the_box():
     assert p.points.tolist()[1:3] == [[0, 4], [0, 5]] or len(p.points) > 2
 
 
+def test_a_stub_ending_at_another_stubs_far_end():
+    # the seam x = 2 between two blocks is covered above y = 2 by a third block (a stub
+    # whose free part ends at (2, 2)); a triangle inside the left block puts the far end
+    # of a second stub (along y = 2) exactly there: (2, 2) is a free point, reached up
+    # the seam, although it is a vertex of no segment
+    obs = [[(2, 2), (1, 2), (1, 1)], sq(0, 0, 2, 3), sq(0, 2, 3, 3), sq(2, 0, 3, 3)]
+    ws = (0, 0, 6, 6)
+    pl = mk.MotionPlanner(obs, workspace=ws, method="mesh")
+    vis = mk.MotionPlanner(obs, workspace=ws, method="visibility")
+    pairs = [((0, 0), (2, 2)), ((2, 2), (6, 0)), ((0, 6), (2, 2)), ((2, 2), (2, 1))]
+    assert pl.shortest_path((0, 0), (2, 2)).points.tolist() == [[0, 0], [2, 0], [2, 2]]
+    check_many(pl, oracle_of(pl), pairs)
+    same_as_visibility(pl, vis, pairs)
+    pl._core.make_landmarks(4, -1.0)  # the tables hold (2, 2) too
+    check_landmark_tables(pl, vis)
+    same_as_visibility(pl, vis, pairs)
+
+
 def touching_rectangles(n, rng):
     """n x n rectangles, one per cell of side 100, each side on the cell border with
     probability 0.3 (else 5-29 inside): neighbours and the box share parts of edges."""

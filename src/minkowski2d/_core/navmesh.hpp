@@ -114,6 +114,10 @@ struct MeshPlanner {
   Planner<double> base;
   NavMesh M;
   NavNet net;  // the zero-width segments (navnet.hpp)
+  // network vertices on no segment that are free points (a stub's far end in another
+  // stub's free part): the search vertices a point there attaches to (for the tables)
+  std::vector<int> loose;
+  std::vector<std::vector<std::pair<int, double>>> loose_att;
   int status = MESH_FAILED;
   double mb[4] = {0, 0, 0, 0};
   // counters of the last query (tests and benchmarks)
@@ -144,6 +148,18 @@ struct MeshPlanner {
     build_navnet(base, M.vx, M.vy, net);
     for (int v = 0; v < M.nvert(); ++v)
       if (net.on(v)) M.vflag[v] |= PORTAL;
+    loose.clear();
+    loose_att.clear();
+    PlanScratch S;
+    S.init((std::size_t)base.items());
+    std::vector<std::pair<int, double>> att;
+    for (int u = M.nvert(); u < nids(); ++u) {
+      if (net.on(u)) continue;
+      locate_net(idx(u), idy(u), att, S);
+      if (att.empty()) continue;
+      loose.push_back(u);
+      loose_att.push_back(att);
+    }
     br.build(M, net);
     eta = 4.0 * (nids() + 16) * 0x1p-53;
     scale = std::max({std::fabs(mb[0]), std::fabs(mb[1]), std::fabs(mb[2]), std::fabs(mb[3])});
@@ -160,8 +176,8 @@ struct MeshPlanner {
   double idy(int id) const { return id < M.nvert() ? M.vy[id] : net.ey[id - M.nvert()]; }
 
   // Where (x, y) lies on the network: the ends of its segment with their distances, or
-  // the one vertex it is; on a stub, the stub's ends that the point sees along it (S:
-  // Planner::blocked's scratch); empty when nowhere on it.
+  // the one vertex it is; on stubs, the search vertices among their ends that the point
+  // sees along them (S: Planner::blocked's scratch); empty when nowhere on it.
   void locate_net(double x, double y, std::vector<std::pair<int, double>>& att,
                   PlanScratch& S) const {
     att.clear();
@@ -180,16 +196,20 @@ struct MeshPlanner {
       att.push_back({b, dist(x, y, idx(b), idy(b))});
       return;
     }
+    // on stubs: the ends of every stub whose free part holds the point (a crossing of
+    // two stubs, or one's far end in the other's free part), those the search has
+    auto search_vertex = [&](int e) { return e < M.nvert() || net.on(e); };
     for (std::size_t k = 0; k < net.sa.size(); ++k) {
       const int a = net.sa[k], b = net.sb[k];
       if (!on_seg(a, b)) continue;
       for (int e : {a, b}) {
+        if (!search_vertex(e)) continue;
         const double ex = idx(e), ey = idy(e);
         if (x == ex && y == ey) return att.assign(1, {e, 0.0});
-        if (!base.blocked(x, y, ex, ey, S)) att.push_back({e, dist(x, y, ex, ey)});
+        bool seen = false;
+        for (const auto& wd : att) seen = seen || wd.first == e;
+        if (!seen && !base.blocked(x, y, ex, ey, S)) att.push_back({e, dist(x, y, ex, ey)});
       }
-      // a free point inside a stub's free part: its free ends, or none (isolated)
-      if (!att.empty()) return;
     }
   }
 
@@ -727,6 +747,8 @@ inline void MeshPlanner::sweep(int v, std::vector<double>& dist, MeshScratch& MS
     MS.best[u] = inf;
   }
   MS.touched.clear();
+  for (std::size_t k = 0; k < loose.size(); ++k)
+    for (const auto& [w, d] : loose_att[k]) dist[loose[k]] = std::min(dist[loose[k]], dist[w] + d);
 }
 
 // The median detour (length / distance - 1) of shortest paths between probe pairs of
