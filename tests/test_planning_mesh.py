@@ -634,6 +634,23 @@ def test_a_stub_ending_at_another_stubs_far_end():
     same_as_visibility(pl, vis, pairs)
 
 
+def test_a_seam_leaving_the_box_is_a_dead_end_inside_it():
+    # two blocks stacked against the box's left side, grown by the robot: their C-space
+    # seam (y = 1, x from -1 to 1) leaves the box at x = 0; its part inside is free and
+    # reaches the free space at (1, 1)
+    robot = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    obs, ws = [sq(0, 0, 1, 1), sq(0, 2, 1, 3)], (0, 0, 6, 6)
+    pl = mk.MotionPlanner(obs, robot=robot, workspace=ws, method="mesh")
+    vis = mk.MotionPlanner(obs, robot=robot, workspace=ws, method="visibility")
+    pairs = [((0, 1), (0, 3)), ((0.5, 1), (4, 4)), ((0, 1), (0.5, 1)), ((1, 1), (0, 1))]
+    assert pl.shortest_path((0, 1), (0, 3)).length == 4.0
+    check_many(pl, oracle_of(pl), pairs)
+    same_as_visibility(pl, vis, pairs)
+    pl._core.make_landmarks(4, -1.0)
+    check_landmark_tables(pl, vis)
+    same_as_visibility(pl, vis, pairs)
+
+
 def touching_rectangles(n, rng):
     """n x n rectangles, one per cell of side 100, each side on the cell border with
     probability 0.3 (else 5-29 inside): neighbours and the box share parts of edges."""

@@ -154,7 +154,7 @@ struct MeshPlanner {
     S.init((std::size_t)base.items());
     std::vector<std::pair<int, double>> att;
     for (int u = M.nvert(); u < nids(); ++u) {
-      if (net.on(u)) continue;
+      if (net.on(u) || !base.in_box(idx(u), idy(u))) continue;
       locate_net(idx(u), idy(u), att, S);
       if (att.empty()) continue;
       loose.push_back(u);

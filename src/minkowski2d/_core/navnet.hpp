@@ -22,8 +22,9 @@
 // test of "the closed segment meets the open interior of a group's union". A candidate
 // that a third obstacle covers in part is a stub: its free part is a dead end (no other
 // zero-width segment leaves it: that would make a breakpoint there), whose far end is in
-// general not a double. No path passes it; a start or goal on it reaches those of the
-// stub's ends that the segment between them is free to (Planner::blocked again).
+// general not a double. So is a candidate that leaves the workspace box: its part inside
+// ends at the box's side. No path passes a stub; a start or goal on it reaches those of
+// the stub's ends that the segment between them is free to (Planner::blocked again).
 #pragma once
 
 #include <algorithm>
@@ -154,8 +155,11 @@ inline void zero_width_segments(const Planner<double>& B, std::vector<double>& s
       }
       if (t == ev.size() || !(nl > 0 && nr > 0 && both == 0)) continue;
       const double qx = ev[t].x, qy = ev[t].y;
-      if (!B.in_box(px, py) || !B.in_box(qx, qy)) continue;
-      std::vector<double>& to = B.blocked(px, py, qx, qy, S) ? stub : seg;
+      // a candidate leaving the box: its part inside is a dead end at the box's side (a
+      // stub); wholly outside, or across the box (no end a path reaches): dropped
+      const bool inp = B.in_box(px, py), inq = B.in_box(qx, qy);
+      if (!inp && !inq) continue;
+      std::vector<double>& to = !(inp && inq) || B.blocked(px, py, qx, qy, S) ? stub : seg;
       to.insert(to.end(), {px, py, qx, qy});
     }
     s = e;
