@@ -31,6 +31,22 @@ using In1 = nb::ndarray<const T, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 template <class T>
 using Out = nb::ndarray<nb::numpy, T>;
 
+// The bindings check the arrays the Python side built before the kernels index them
+// blindly. check_offsets: a CSR offsets array of n + 1 entries into `end` items --
+// off[0] == 0, off[n] == end, non-decreasing (strictly increasing with `strict`: every
+// group holds an item); check_finite: no NaN or infinity among `count` values. Else
+// ValueError(what).
+inline void check_offsets(const i64* off, i64 n, i64 end, const char* what,
+                          bool strict = false) {
+  if (n < 0 || off[0] != 0 || off[n] != end) throw nb::value_error(what);
+  for (i64 k = 0; k < n; ++k)
+    if (strict ? off[k + 1] <= off[k] : off[k + 1] < off[k]) throw nb::value_error(what);
+}
+inline void check_finite(const double* v, i64 count, const char* what) {
+  for (i64 q = 0; q < count; ++q)
+    if (!(v[q] - v[q] == 0)) throw nb::value_error(what);
+}
+
 // Memory handed to numpy: malloc'd, and for large blocks 2 MiB-aligned with
 // madvise(MADV_HUGEPAGE), as numpy's own allocator does. On this kind of kernel
 // (transparent huge pages in "madvise" mode) fresh 4 KiB pages cost a fault each, and

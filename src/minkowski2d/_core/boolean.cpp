@@ -36,14 +36,12 @@ void check_polys(const In2<double>& X, const In1<i64>& RO, const In1<i64>& PO,
   if (X.shape(1) != 2) throw nb::value_error("boolean: coordinates must have shape (n, 2)");
   const i64 n = (i64)X.shape(0), R = (i64)RO.shape(0) - 1, P = (i64)PO.shape(0) - 1;
   const i64 *ro = RO.data(), *po = PO.data(), *to = TO.data();
-  if (R < 0 || P < 0 || ro[0] != 0 || ro[R] != n || po[0] != 0 || po[P] != R ||
-      (i64)TO.shape(0) != T + 1 || (whole && (to[0] != 0 || to[T] != P)) || to[0] < 0 ||
+  check_offsets(ro, R, n, "boolean: bad offsets");
+  check_offsets(po, P, R, "boolean: bad offsets", true);
+  // task offsets: all polygons in order (whole), or any ascending range of them
+  if ((i64)TO.shape(0) != T + 1 || (whole && (to[0] != 0 || to[T] != P)) || to[0] < 0 ||
       to[T] > P)
     throw nb::value_error("boolean: bad offsets");
-  for (i64 r = 0; r < R; ++r)
-    if (ro[r + 1] < ro[r]) throw nb::value_error("boolean: bad offsets");
-  for (i64 p = 0; p < P; ++p)
-    if (po[p + 1] <= po[p]) throw nb::value_error("boolean: bad offsets");
   for (i64 t = 0; t < T; ++t)
     if (to[t + 1] < to[t]) throw nb::value_error("boolean: bad offsets");
 }
@@ -128,12 +126,8 @@ nb::tuple clip_lines_f(In2<double> LX, In1<i64> LO, In1<i64> LT, In2<double> AX,
   {
     const i64 n = (i64)LX.shape(0), L = (i64)LO.shape(0) - 1;
     const i64 *lo = LO.data(), *lt = LT.data();
-    if (L < 0 || lo[0] != 0 || lo[L] != n || lt[0] != 0 || lt[T] != L)
-      throw nb::value_error("clip_lines: bad offsets");
-    for (i64 l = 0; l < L; ++l)
-      if (lo[l + 1] < lo[l]) throw nb::value_error("clip_lines: bad offsets");
-    for (i64 t = 0; t < T; ++t)
-      if (lt[t + 1] < lt[t]) throw nb::value_error("clip_lines: bad offsets");
+    check_offsets(lo, L, n, "clip_lines: bad offsets");
+    check_offsets(lt, T, L, "clip_lines: bad offsets");
   }
   if (fill < 0 || fill > 3) throw nb::value_error("clip_lines: unknown fill rule");
   std::vector<std::vector<double>> xy((std::size_t)T);

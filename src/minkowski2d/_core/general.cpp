@@ -23,12 +23,6 @@ namespace {
 
 constexpr int ERODE = -1;
 
-void check_offsets(const i64* off, i64 n, i64 end, const char* what) {
-  if (n < 0 || off[0] != 0 || off[n] != end) throw nb::value_error(what);
-  for (i64 k = 0; k < n; ++k)
-    if (off[k + 1] < off[k]) throw nb::value_error(what);
-}
-
 // general_sums(operands: xy (N, 2), ring_off, poly_off, op_off, kind (O,) int8;
 //              pieces: pc_xy (M, 2), pc_off, op_pc_off; pairs ia, ib (K,); method,
 //              limits (conv segments, piece pairs, crossings), threads)
@@ -56,11 +50,8 @@ nb::tuple general_sums(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> OO,
   for (i64 k = 0; k < K; ++k)
     if (IA.data()[k] < 0 || IA.data()[k] >= no || IB.data()[k] < 0 || IB.data()[k] >= no)
       throw nb::value_error("general_sums: operand index out of range");
-  for (i64 q = 0; q < 2 * n; ++q)
-    if (!(XY.data()[q] - XY.data()[q] == 0)) throw nb::value_error("general_sums: non-finite");
-  for (i64 q = 0; q < 2 * m; ++q)
-    if (!(PCXY.data()[q] - PCXY.data()[q] == 0))
-      throw nb::value_error("general_sums: non-finite");
+  check_finite(XY.data(), 2 * n, "general_sums: non-finite");
+  check_finite(PCXY.data(), 2 * m, "general_sums: non-finite");
 
   mk::ms::Table T{XY.data(),   RO.data(),  PO.data(), OO.data(), KIND.data(),
                   PCXY.data(), PCO.data(), OPC.data(), no};

@@ -145,16 +145,12 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
   const i64 *ro = RO.data(), *go = GO.data(), *rh = RH.data(), *un = UN.data();
   const double* dl = DL.data();
-  if (nr < 0 || ng < 0 || ro[0] != 0 || ro[nr] != n || go[0] != 0 || go[ng] != nr ||
-      (i64)RH.shape(0) != nr || (i64)UN.shape(0) != ng || (i64)DL.shape(0) != ng)
+  check_offsets(ro, nr, n, "offset: bad ring offsets");
+  check_offsets(go, ng, nr, "offset: bad geometry offsets");
+  if ((i64)RH.shape(0) != nr || (i64)UN.shape(0) != ng || (i64)DL.shape(0) != ng)
     throw nb::value_error("offset: bad offsets");
-  for (i64 r = 0; r < nr; ++r)
-    if (ro[r + 1] < ro[r]) throw nb::value_error("offset: bad ring offsets");
-  for (i64 k = 0; k < ng; ++k)
-    if (go[k + 1] < go[k]) throw nb::value_error("offset: bad geometry offsets");
   const double* xy = XY.data();
-  for (i64 q = 0; q < 2 * n; ++q)
-    if (!(xy[q] - xy[q] == 0)) throw nb::value_error("offset: non-finite coordinate");
+  check_finite(xy, 2 * n, "offset: non-finite coordinate");
   if (labels && ng != 1) throw nb::value_error("offset: labels for one geometry only");
   mk::off::Params p = params(distance, tolerance, default_rel, outer, join, limit);
   p.resolve = resolve;
@@ -237,15 +233,10 @@ nb::tuple offset_polygons(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> GO,
             ng = (i64)GO.shape(0) - 1;
   if (XY.shape(1) != 2) throw nb::value_error("offset: coordinates must have shape (n, 2)");
   const i64 *ro = RO.data(), *po = PO.data(), *go = GO.data();
-  if (nr < 0 || np_ < 0 || ng < 0 || ro[0] != 0 || ro[nr] != n || po[0] != 0 || po[np_] != nr ||
-      go[0] != 0 || go[ng] != np_ || (i64)DS.shape(0) != ng || (i64)TS.shape(0) != ng)
-    throw nb::value_error("offset: bad offsets");
-  for (i64 r = 0; r < nr; ++r)
-    if (ro[r + 1] < ro[r]) throw nb::value_error("offset: bad ring offsets");
-  for (i64 q = 0; q < np_; ++q)
-    if (po[q + 1] <= po[q]) throw nb::value_error("offset: bad polygon offsets");
-  for (i64 k = 0; k < ng; ++k)
-    if (go[k + 1] < go[k]) throw nb::value_error("offset: bad geometry offsets");
+  check_offsets(ro, nr, n, "offset: bad ring offsets");
+  check_offsets(po, np_, nr, "offset: bad polygon offsets", true);
+  check_offsets(go, ng, np_, "offset: bad geometry offsets");
+  if ((i64)DS.shape(0) != ng || (i64)TS.shape(0) != ng) throw nb::value_error("offset: bad offsets");
   const mk::off::Params base = params(0, NAN, default_rel, outer, join, limit);
   const double *xy = XY.data(), *ds = DS.data(), *ts = TS.data();
   std::vector<mk::off::Result> res((std::size_t)ng);

@@ -47,14 +47,11 @@ void check_rings(In2<double> H, In2<double> L, In1<i64> RO) {
   if (L.shape(0) != 0 && ((i64)L.shape(0) != n || L.shape(1) != 2))
     throw nb::value_error("overlay: lo must have the shape of hi");
   const i64* ro = RO.data();
-  if (nr < 0 || ro[0] != 0 || ro[nr] != n) throw nb::value_error("overlay: bad ring offsets");
-  for (i64 r = 0; r < nr; ++r)
-    if (ro[r + 1] < ro[r]) throw nb::value_error("overlay: bad ring offsets");
+  check_offsets(ro, nr, n, "overlay: bad ring offsets");
   const double* h = H.data();
   const double* l = L.shape(0) ? L.data() : nullptr;
-  for (i64 q = 0; q < 2 * n; ++q)
-    if (!(h[q] - h[q] == 0) || (l && !(l[q] - l[q] == 0)))
-      throw nb::value_error("overlay: non-finite coordinate");
+  check_finite(h, 2 * n, "overlay: non-finite coordinate");
+  if (l) check_finite(l, 2 * n, "overlay: non-finite coordinate");
 }
 
 // overlay_rings(hi, lo, ring_off, weight (R,), layer (R,), rule) -> (xy, ring_off,
@@ -84,14 +81,9 @@ void check_ragged(In2<double> XY, In1<i64> RO, In1<i64> PO) {
   const i64 n = (i64)XY.shape(0), nr = (i64)RO.shape(0) - 1, np = (i64)PO.shape(0) - 1;
   if (XY.shape(1) != 2) throw nb::value_error("sum: coordinates must have shape (n, 2)");
   const i64 *ro = RO.data(), *po = PO.data();
-  if (nr < 0 || np < 0 || ro[0] != 0 || ro[nr] != n || po[0] != 0 || po[np] != nr)
-    throw nb::value_error("sum: bad offsets");
-  for (i64 r = 0; r < nr; ++r)
-    if (ro[r + 1] < ro[r]) throw nb::value_error("sum: bad offsets");
-  for (i64 p = 0; p < np; ++p)
-    if (po[p + 1] <= po[p]) throw nb::value_error("sum: bad offsets");
-  for (i64 q = 0; q < 2 * n; ++q)
-    if (!(XY.data()[q] - XY.data()[q] == 0)) throw nb::value_error("sum: non-finite coordinate");
+  check_offsets(ro, nr, n, "sum: bad offsets");
+  check_offsets(po, np, nr, "sum: bad offsets", true);
+  check_finite(XY.data(), 2 * n, "sum: non-finite coordinate");
 }
 
 // sum_convolution(A xy, ring_off, poly_off, B xy, ring_off, poly_off) -> (xy, ring_off,

@@ -48,9 +48,7 @@ nb::tuple union_convex(In2<double> XY, In1<i64> OFF, i64 max_crossings, i64 max_
   const i64 n = (i64)XY.shape(0), np = (i64)OFF.shape(0) - 1;
   if (XY.shape(1) != 2) throw nb::value_error("union_convex: coordinates must have shape (n, 2)");
   const i64* off = OFF.data();
-  if (np < 0 || off[0] != 0 || off[np] != n) throw nb::value_error("union_convex: bad offsets");
-  for (i64 k = 0; k < np; ++k)
-    if (off[k + 1] < off[k]) throw nb::value_error("union_convex: bad offsets");
+  check_offsets(off, np, n, "union_convex: bad offsets");
   const double* xy = XY.data();
   mk::ov::Rings out;
   mk::un::UnionStats st;
@@ -74,9 +72,7 @@ nb::tuple sum_pieces_union(In2<double> PA, In1<i64> OA, In2<double> PB, In1<i64>
     const i64 n = (i64)P->shape(0), np = (i64)O->shape(0) - 1;
     if (P->shape(1) != 2) throw nb::value_error("sum_pieces: coordinates must have shape (n, 2)");
     const i64* o = O->data();
-    if (np < 0 || o[0] != 0 || o[np] != n) throw nb::value_error("sum_pieces: bad offsets");
-    for (i64 k = 0; k < np; ++k)
-      if (o[k + 1] < o[k]) throw nb::value_error("sum_pieces: bad offsets");
+    check_offsets(o, np, n, "sum_pieces: bad offsets");
   }
   mk::ov::Rings out;
   mk::un::UnionStats st;
