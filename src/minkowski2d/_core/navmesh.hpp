@@ -114,10 +114,6 @@ struct MeshPlanner {
   Planner<double> base;
   NavMesh M;
   NavNet net;  // the zero-width segments (navnet.hpp)
-  // network vertices on no segment that are free points (a stub's far end in another
-  // stub's free part): the search vertices a point there attaches to (for the tables)
-  std::vector<int> loose;
-  std::vector<std::vector<std::pair<int, double>>> loose_att;
   int status = MESH_FAILED;
   double mb[4] = {0, 0, 0, 0};
   // counters of the last query (tests and benchmarks)
@@ -148,18 +144,6 @@ struct MeshPlanner {
     build_navnet(base, M.vx, M.vy, net);
     for (int v = 0; v < M.nvert(); ++v)
       if (net.on(v)) M.vflag[v] |= PORTAL;
-    loose.clear();
-    loose_att.clear();
-    PlanScratch S;
-    S.init((std::size_t)base.items());
-    std::vector<std::pair<int, double>> att;
-    for (int u = M.nvert(); u < nids(); ++u) {
-      if (net.on(u) || !base.in_box(idx(u), idy(u))) continue;
-      locate_net(idx(u), idy(u), att, S);
-      if (att.empty()) continue;
-      loose.push_back(u);
-      loose_att.push_back(att);
-    }
     br.build(M, net);
     eta = 4.0 * (nids() + 16) * 0x1p-53;
     scale = std::max({std::fabs(mb[0]), std::fabs(mb[1]), std::fabs(mb[2]), std::fabs(mb[3])});
@@ -747,8 +731,6 @@ inline void MeshPlanner::sweep(int v, std::vector<double>& dist, MeshScratch& MS
     MS.best[u] = inf;
   }
   MS.touched.clear();
-  for (std::size_t k = 0; k < loose.size(); ++k)
-    for (const auto& [w, d] : loose_att[k]) dist[loose[k]] = std::min(dist[loose[k]], dist[w] + d);
 }
 
 // The median detour (length / distance - 1) of shortest paths between probe pairs of
@@ -828,6 +810,20 @@ inline void MeshPlanner::build_landmarks() {
   cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
   i64 before = 0, after = 0;
   if (min_detour >= 0 && probe(cand, before) < min_detour) return;
+  // network vertices on no segment that are free points (a stub's far end in another
+  // stub's free part): their distances through the search vertices a point there
+  // attaches to
+  std::vector<std::pair<int, std::vector<std::pair<int, double>>>> loose;
+  {
+    PlanScratch S;
+    S.init((std::size_t)base.items());
+    std::vector<std::pair<int, double>> att;
+    for (int u = M.nvert(); u < nids(); ++u) {
+      if (net.on(u) || !base.in_box(idx(u), idy(u))) continue;
+      locate_net(idx(u), idy(u), att, S);
+      if (!att.empty()) loose.push_back({u, att});
+    }
+  }
   MeshScratch MS;
   std::vector<double> dist;
   // kept where they cut the probes' nodes by a tenth (not where the bridges already
@@ -838,13 +834,19 @@ inline void MeshPlanner::build_landmarks() {
     probe(cand, after);
     return 10 * (before - after) >= before;
   };
+  bool keep = true;
   for (int l = 0; l < n_landmarks && v >= 0; ++l) {
     sweep(v, dist, MS);
+    for (const auto& [u, att] : loose)
+      for (const auto& [w, d] : att) dist[u] = std::min(dist[u], dist[w] + d);
     lm.add(v, dist);
     v = lm.farthest(M.nvert());
-    if (2 * (l + 1) == n_landmarks && !pays()) break;
+    if (2 * (l + 1) == n_landmarks && !pays()) {
+      keep = false;
+      break;
+    }
   }
-  if (!pays()) lm = MeshLandmarks{};
+  if (!keep || !pays()) lm = MeshLandmarks{};
 }
 
 // ------------------------------------------------------------------------------------
