@@ -506,7 +506,9 @@ inline bool box_tree_pairs(i64 n, const double* x0, const double* x1, const doub
 // The items of a uniform grid's cells (a CSR list): item it (of n) goes into every cell
 // (c, r) with xa <= c <= xb, ya <= r <= yb, range(it, xa, xb, ya, yb) giving them; off
 // has nx * ny + 1 entries, items the item ids cell after cell, in item order. The one
-// bucketing of the planner's and the mesh's grids (planning.hpp, navmesh_build.hpp).
+// bucketing of the uniform grids: the planner's and the mesh's (planning.hpp,
+// navmesh_build.hpp), the union's containment index (union_index.hpp) and the offset's
+// edge grid (offset.hpp).
 template <class Range>
 void grid_buckets(i64 n, i64 nx, i64 ny, Range&& range, std::vector<i64>& off,
                   std::vector<int>& items) {

@@ -71,6 +71,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "boxes.hpp"
 #include "exact.hpp"
 #include "exactnum.hpp"
 #include "minkowski.hpp"
@@ -126,23 +127,12 @@ class EdgeGrid {
       nx_ = ny_ = 1;  // degenerate extents: one cell
       ix_ = iy_ = 0;
     }
-    start_.assign((std::size_t)(nx_ * ny_ + 1), 0);
-    for (int pass = 0; pass < 2; ++pass) {
-      if (pass == 1) {
-        for (i64 c = 0; c < nx_ * ny_; ++c) start_[c + 1] += start_[c];
-        item_.resize((std::size_t)start_[nx_ * ny_]);
-        fill_.assign(start_.begin(), start_.end() - 1);
-      }
-      for (i64 i = 0; i < n; ++i) {
-        const i64 cx0 = cx(std::min(a_[i].x, b_[i].x)), cx1 = cx(std::max(a_[i].x, b_[i].x));
-        const i64 cy0 = cy(std::min(a_[i].y, b_[i].y)), cy1 = cy(std::max(a_[i].y, b_[i].y));
-        for (i64 y = cy0; y <= cy1; ++y)
-          for (i64 x = cx0; x <= cx1; ++x) {
-            if (pass == 0) ++start_[y * nx_ + x + 1];
-            else item_[fill_[y * nx_ + x]++] = i;
-          }
-      }
-    }
+    grid_buckets(n, nx_, ny_, [&](i64 i, i64& xa, i64& xb, i64& ya, i64& yb) {
+      xa = cx(std::min(a_[i].x, b_[i].x));
+      xb = cx(std::max(a_[i].x, b_[i].x));
+      ya = cy(std::min(a_[i].y, b_[i].y));
+      yb = cy(std::max(a_[i].y, b_[i].y));
+    }, start_, item_);
     stamp_.assign((std::size_t)n, -1);
     query_ = 0;
   }
@@ -165,7 +155,8 @@ class EdgeGrid {
 
  private:
   std::vector<Pt> a_, b_;
-  std::vector<i64> start_, item_, fill_, stamp_;
+  std::vector<i64> start_, stamp_;
+  std::vector<int> item_;
   double X0_ = 0, Y0_ = 0, ix_ = 1, iy_ = 1;
   i64 nx_ = 1, ny_ = 1, query_ = 0;
   // cell indices: floor is monotone, so a box meets the cells of its two corners' range
@@ -315,9 +306,6 @@ class Offsetter {
   Chains cscr_;
   EdgeGrid grid_;
   std::vector<std::vector<char>> affected_;  // per curve, the cuts' ring vertices
-  BoxScratch boxes_;
-
-  std::vector<double> cbox_;
 
   // Builds the curves of the rings sc (pruned when asked) and their region in
   // res.rings; false (res.code set) when a piece fails its certificate.
@@ -574,9 +562,7 @@ class Offsetter {
   static void direct(const Curve& cv, bool grow, bool want_labels, Result& res) {
     const std::vector<Pt>& p = cv.pts;
     const std::size_t n = p.size();
-    std::size_t lo = 0;
-    for (std::size_t i = 1; i < n; ++i)
-      if (p[i].x < p[lo].x || (p[i].x == p[lo].x && p[i].y < p[lo].y)) lo = i;
+    const std::size_t lo = (std::size_t)least_point(p);
     int o = orient(p[(lo + n - 1) % n], p[lo], p[(lo + 1) % n]);  // nonzero: extreme
     ov::Rings& R = res.rings;
     R.clear();

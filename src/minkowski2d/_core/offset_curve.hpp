@@ -118,6 +118,15 @@ inline I prev_of(I i, I n) {
 }
 inline i64 wrap(i64 i, i64 n) { return i < 0 ? i + n : (i >= n ? i - n : i); }
 
+// The index of the least (x, y) point of a nonempty list: on its hull (for a closed curve,
+// on the outer boundary of the region it winds around), the first of equals.
+inline i64 least_point(const std::vector<Pt>& p) {
+  i64 h = 0;
+  for (i64 k = 1; k < (i64)p.size(); ++k)
+    if (p[k].x < p[h].x || (p[k].x == p[h].x && p[k].y < p[h].y)) h = k;
+  return h;
+}
+
 // ------------------------------------------------------------------------------------
 // parameters of one offset (scaled so that every coordinate is below 2)
 

@@ -113,7 +113,7 @@ class Pruner {
     t_lo_ = s.r_check * (1 - 0x1p-30);
     n_ = n;
     local_ = crossings == nullptr;
-    const i64 s0 = local_ ? hull_point(cv.pts) : far_start(m, *crossings);
+    const i64 s0 = local_ ? least_point(cv.pts) : far_start(m, *crossings);
     if (!local_) partners(m, s0, *crossings);
     where_.assign(m, -1);
     Q_.clear();
@@ -152,14 +152,6 @@ class Pruner {
   }
 
  private:
-  // The least (x, y) point: on the curve's hull, so on the outer boundary of a grow.
-  static i64 hull_point(const std::vector<Pt>& p) {
-    i64 s0 = 0;
-    for (i64 k = 1; k < (i64)p.size(); ++k)
-      if (p[k].x < p[s0].x || (p[k].x == p[s0].x && p[k].y < p[s0].y)) s0 = k;
-    return s0;
-  }
-
   // The middle of the longest run of segments without a crossing (a loop seldom spans
   // it, so a cut seldom has to wrap around the start).
   i64 far_start(i64 m, const std::vector<std::pair<i64, i64>>& crossings) {

@@ -108,7 +108,7 @@ class Resolver {
       return s < 0;
     });
     if (tie) return false;
-    const i64 h = least_point();
+    const i64 h = least_point(*p_);
     std::size_t t0 = 0;
     while (t0 < occ_.size() && occ_[t0].seg < h) ++t0;
     std::rotate(occ_.begin(), occ_.begin() + (std::ptrdiff_t)(t0 % occ_.size()), occ_.end());
@@ -126,15 +126,6 @@ class Resolver {
   int delta(i64 o, i64 s) const {
     const Pt a = pt(o), b = pt(o + 1), c = pt(s), d = pt(s + 1);
     return cross_sign(a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y);
-  }
-
-  i64 least_point() const {
-    i64 h = 0;
-    for (i64 i = 1; i < m_; ++i) {
-      const Pt &a = (*p_)[i], &b = (*p_)[h];
-      if (a.x < b.x || (a.x == b.x && a.y < b.y)) h = i;
-    }
-    return h;
   }
 
   // The winding on each arc's right, the boundary arcs, and at each crossing the one

@@ -12,6 +12,7 @@
 #include <numeric>
 #include <vector>
 
+#include "boxes.hpp"
 #include "exact.hpp"
 #include "exactnum.hpp"
 #include "overlay.hpp"
@@ -148,8 +149,6 @@ class BoundaryIndex {
     xs_.set(X0_, X1_, nx);
     ys_.set(Y0_, Y1_, ny);
     // cells of each edge (CSR, row-major)
-    const i64 nc = nx * ny;
-    start_.assign(nc + 1, 0);
     span_.resize(n);
     for (i64 i = 0; i < n; ++i) {
       Span& sp = span_[i];
@@ -157,17 +156,11 @@ class BoundaryIndex {
       sp.c1 = (std::int32_t)xs_.last(bx1_[i]);
       sp.r0 = (std::int32_t)ys_.first(by0_[i]);
       sp.r1 = (std::int32_t)ys_.last(by1_[i]);
-      for (i64 r = sp.r0; r <= sp.r1; ++r)
-        for (i64 c = sp.c0; c <= sp.c1; ++c) ++start_[r * nx + c + 1];
     }
-    for (i64 c = 0; c < nc; ++c) start_[c + 1] += start_[c];
-    cells_.resize(start_[nc]);
-    fill_.assign(start_.begin(), start_.end() - 1);
-    for (i64 i = 0; i < n; ++i) {
+    grid_buckets(n, nx, ny, [&](i64 i, i64& xa, i64& xb, i64& ya, i64& yb) {
       const Span& sp = span_[i];
-      for (i64 r = sp.r0; r <= sp.r1; ++r)
-        for (i64 c = sp.c0; c <= sp.c1; ++c) cells_[fill_[r * nx + c]++] = i;
-    }
+      xa = sp.c0, xb = sp.c1, ya = sp.r0, yb = sp.r1;
+    }, start_, cells_);
     // registrations in the cells [0, r) x [0, c)
     sum_.assign((ny + 1) * (nx + 1), 0);
     for (i64 r = 0; r < ny; ++r)
@@ -290,7 +283,8 @@ class BoundaryIndex {
   std::vector<double> bx0_, bx1_, by0_, by1_;
   double X0_ = 0, X1_ = 0, Y0_ = 0, Y1_ = 0;
   Axis xs_, ys_;
-  std::vector<i64> start_, cells_, fill_, sum_;
+  std::vector<i64> start_, sum_;
+  std::vector<int> cells_;  // the edges of each cell (grid_buckets)
   std::vector<double> s0_, s1_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t epoch_ = 0;
