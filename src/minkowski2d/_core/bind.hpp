@@ -47,6 +47,33 @@ inline void check_finite(const double* v, i64 count, const char* what) {
     if (!(v[q] - v[q] == 0)) throw nb::value_error(what);
 }
 
+// Rings handed back closed (each ring's first vertex repeated at its end), as shapely's
+// from_ragged_array takes them. R holds them as ov::Rings does (xy: x, y per vertex;
+// ring_off; poly_off into its rings). count_closed adds their rows, rings and polygons to
+// the totals; append_closed writes them at row, ring, poly (oro[ring] and opo[poly]
+// already set; opo nullptr: polygons not written) and advances the three.
+template <class Rings>
+void count_closed(const Rings& R, i64& rows, i64& rings, i64& polys) {
+  rows += (i64)R.xy.size() / 2 + (i64)R.ring_off.size() - 1;
+  rings += (i64)R.ring_off.size() - 1;
+  polys += (i64)R.poly_off.size() - 1;
+}
+template <class Rings>
+void append_closed(const Rings& R, double* oxy, i64* oro, i64* opo, i64& row, i64& ring,
+                   i64& poly) {
+  const i64 rr = (i64)R.ring_off.size() - 1, base = ring;
+  for (i64 k = 0; k < rr; ++k) {
+    const i64 a = R.ring_off[k], b = R.ring_off[k + 1];
+    std::memcpy(oxy + 2 * row, R.xy.data() + 2 * a, sizeof(double) * 2 * (b - a));
+    row += b - a;
+    oxy[2 * row] = R.xy[2 * a];
+    oxy[2 * row + 1] = R.xy[2 * a + 1];
+    oro[++ring] = ++row;
+  }
+  if (opo)
+    for (std::size_t k = 1; k < R.poly_off.size(); ++k) opo[++poly] = base + R.poly_off[k];
+}
+
 // Memory handed to numpy: malloc'd, and for large blocks 2 MiB-aligned with
 // madvise(MADV_HUGEPAGE), as numpy's own allocator does. On this kind of kernel
 // (transparent huge pages in "madvise" mode) fresh 4 KiB pages cost a fault each, and

@@ -83,10 +83,7 @@ nb::tuple boolean_f(In2<double> X, In1<i64> RO, In1<i64> PO, In1<i64> ATO, In1<i
   for (i64 t = 0; t < T; ++t) {
     const mk::ov::Rings& r = res[t];
     status[t] = r.status;
-    if (r.status != mk::OK) continue;
-    rows += (i64)r.xy.size() / 2 + (i64)r.ring_off.size() - 1;
-    nrings += (i64)r.ring_off.size() - 1;
-    npolys += (i64)r.poly_off.size() - 1;
+    if (r.status == mk::OK) count_closed(r, rows, nrings, npolys);
   }
   double* oxy = alloc<double>(2 * rows);
   i64* oro = alloc<i64>(nrings + 1);
@@ -96,20 +93,7 @@ nb::tuple boolean_f(In2<double> X, In1<i64> RO, In1<i64> PO, In1<i64> ATO, In1<i
   oro[0] = opo[0] = oto[0] = 0;
   for (i64 t = 0; t < T; ++t) {
     const mk::ov::Rings& R = res[t];
-    if (R.status == mk::OK) {
-      const i64 rr = (i64)R.ring_off.size() - 1;
-      for (i64 k = 0; k < rr; ++k) {
-        const i64 a = R.ring_off[k], b = R.ring_off[k + 1];
-        for (i64 i = a; i <= b; ++i, ++row) {
-          const i64 s = i < b ? i : a;
-          oxy[2 * row] = R.xy[2 * s];
-          oxy[2 * row + 1] = R.xy[2 * s + 1];
-        }
-        oro[++ring] = row;
-      }
-      const i64 base = ring - rr;
-      for (std::size_t k = 1; k < R.poly_off.size(); ++k) opo[++poly] = base + R.poly_off[k];
-    }
+    if (R.status == mk::OK) append_closed(R, oxy, oro, opo, row, ring, poly);
     oto[t + 1] = poly;
   }
   return nb::make_tuple(owned(oxy, (std::size_t)rows, 2), owned(oro, (std::size_t)nrings + 1, 0),

@@ -75,11 +75,7 @@ mk::off::Params params(double distance, double tolerance, double default_rel, bo
 nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
   const i64 ng = (i64)res.size();
   i64 rows = 0, nrings = 0, npolys = 0;
-  for (auto& r : res) {
-    rows += (i64)r.rings.xy.size() / 2 + (i64)r.rings.ring_off.size() - 1;
-    nrings += (i64)r.rings.ring_off.size() - 1;
-    npolys += (i64)r.rings.poly_off.size() - 1;
-  }
+  for (auto& r : res) count_closed(r.rings, rows, nrings, npolys);
   double* oxy = alloc<double>(2 * rows);
   i64* oro = alloc<i64>(nrings + 1);
   i64* opo = alloc<i64>(npolys + 1);
@@ -98,20 +94,12 @@ nb::tuple pack(const std::vector<mk::off::Result>& res, bool labels) {
     oin[5 * g + 3] = r.eps;
     oin[5 * g + 4] = r.path;
     const auto& R = r.rings;
-    const i64 rr = (i64)R.ring_off.size() - 1;
-    for (i64 k = 0; k < rr; ++k) {
-      i64 a = R.ring_off[k], b = R.ring_off[k + 1];
-      for (i64 i = a; i <= b; ++i) {
-        i64 s = i < b ? i : a;
-        oxy[2 * row] = R.xy[2 * s];
-        oxy[2 * row + 1] = R.xy[2 * s + 1];
-        if (labels) lab.push_back(i < b ? r.labels[s] : mk::off::DETOUR);
-        ++row;
+    append_closed(R, oxy, oro, opo, row, ring, poly);
+    if (labels)  // each ring's closing vertex: DETOUR
+      for (std::size_t k = 0; k + 1 < R.ring_off.size(); ++k) {
+        lab.insert(lab.end(), r.labels.begin() + R.ring_off[k], r.labels.begin() + R.ring_off[k + 1]);
+        lab.push_back(mk::off::DETOUR);
       }
-      oro[++ring] = row;
-    }
-    const i64 base = ring - rr;
-    for (std::size_t k = 1; k < R.poly_off.size(); ++k) opo[++poly] = base + R.poly_off[k];
     ogo[g + 1] = poly;
   }
   nb::object extra = nb::none();
@@ -307,19 +295,12 @@ nb::object offset_one(In2<double> XY, double distance, double tolerance, double 
     return nb::none();
   }
   const auto& R = out.rings;
-  const i64 nr = (i64)R.ring_off.size() - 1, rows = (i64)R.xy.size() / 2 + nr;
+  i64 rows = 0, nr = 0, np_ = 0, row = 0, ring = 0, poly = 0;
+  count_closed(R, rows, nr, np_);
   double* oxy = alloc<double>(2 * rows);
   i64* oro = alloc<i64>(nr + 1);
-  i64 row = 0;
   oro[0] = 0;
-  for (i64 k = 0; k < nr; ++k) {  // closed: each ring's first vertex repeated
-    const i64 a = R.ring_off[k], b = R.ring_off[k + 1];
-    std::memcpy(oxy + 2 * row, R.xy.data() + 2 * a, sizeof(double) * 2 * (b - a));
-    row += b - a;
-    oxy[2 * row] = R.xy[2 * a];
-    oxy[2 * row + 1] = R.xy[2 * a + 1];
-    oro[k + 1] = ++row;
-  }
+  append_closed(R, oxy, oro, nullptr, row, ring, poly);
   nb::tuple got = nb::make_tuple(owned(oxy, (std::size_t)rows, 2),
                                 owned(oro, (std::size_t)nr + 1, 0),
                                 to_numpy(R.poly_off, R.poly_off.size(), 0));
