@@ -175,18 +175,13 @@ def _polygon_type() -> type:
     return shapely.Polygon
 
 
-def _no_holes(polygon: Any) -> bool:
-    import shapely
-
-    return shapely.lib.get_num_interior_rings(polygon) == 0
-
-
 def _one_polygon(
     polygon: Any, d: float, tol: float | None, approx: str, join: str, lim: float
 ) -> Any:
-    """The offset of a shapely Polygon without holes by the core's entry for one ring (its
-    coordinates read by one GEOS call, the result built by one ``from_ragged_array``), or
-    None: an invalid one, an error (the general path reads, offsets and reports it)."""
+    """The offset of a shapely Polygon by the core's entry for one ring (its coordinates
+    read by one GEOS call, the result built by one ``from_ragged_array``), or None: a
+    polygon with holes, an invalid one, an error (the general path reads, offsets and
+    reports it)."""
     import shapely
 
     got = core.offset_one(
@@ -583,7 +578,7 @@ def offset(
         # one polygon: the shortest way through (read and checked by the core itself when
         # shapely or a float64 ring, else by the reader)
         extra = _distance_error(distance, d)
-        if extra == 0 and type(polygon) is _polygon_type() and _no_holes(polygon):
+        if extra == 0 and type(polygon) is _polygon_type():
             got = _one_polygon(polygon, d, tol, approx, join, lim)
             if got is not None:
                 return got
