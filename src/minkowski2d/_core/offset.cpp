@@ -35,27 +35,18 @@ struct CheckScratch {
   std::vector<std::pair<i64, i64>> crossings;
 };
 
-// What a thread of a call works with, kept between calls (its buffers are reused;
-// released when a call left them large). On the heap: an object in thread-local storage
-// would cost a TLS lookup at every use of its members in code specialized for it.
+// What a thread of a call works with, kept between calls (buffer.hpp's
+// with_thread_workspace: its buffers are reused, released when a call left them large).
 struct Worker {
   mk::off::Offsetter off;
   CheckScratch cs;
   std::vector<mk::ms::Ring> rings;
   mk::off::Result one;  // offset_one's result (its buffers reused)
 };
-std::unique_ptr<Worker>& worker_slot() {
-  thread_local std::unique_ptr<Worker> w;
-  return w;
-}
-Worker& worker() {
-  auto& slot = worker_slot();
-  if (!slot) slot = std::make_unique<Worker>();
-  return *slot;
-}
-void release_large() {
-  auto& slot = worker_slot();
-  if (slot && slot->off.footprint() > (std::size_t(1) << 22)) slot.reset();
+template <class F>
+auto with_worker(F&& f) {
+  return mk::with_thread_workspace<Worker>(
+      [](const Worker& w) { return w.off.footprint() > (std::size_t(1) << 22); }, f);
 }
 
 mk::off::Params params(double distance, double tolerance, double default_rel, bool outer,
@@ -145,19 +136,16 @@ nb::tuple offset_rings(In2<double> XY, In1<i64> RO, In1<i64> RH, In1<i64> GO, In
   std::vector<mk::off::Result> res((std::size_t)ng);
   {
     nb::gil_scoped_release nogil;
-    auto work = [&](i64 g0, i64 g1) {
-      Worker& wk = worker();
-      mk::off::Offsetter& off = wk.off;
-      std::vector<mk::ms::Ring>& rings = wk.rings;
-      for (i64 g = g0; g < g1; ++g) {
-        rings.clear();
-        for (i64 r = go[g]; r < go[g + 1]; ++r)
-          rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], rh[r] != 0));
-        off.run(rings, un[g] != 0, dl[g], p, labels, res[(std::size_t)g]);
-      }
-      release_large();
-    };
-    mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) { work(g0, g1); });
+    mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) {
+      with_worker([&](Worker& wk) {
+        for (i64 g = g0; g < g1; ++g) {
+          wk.rings.clear();
+          for (i64 r = go[g]; r < go[g + 1]; ++r)
+            wk.rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], rh[r] != 0));
+          wk.off.run(wk.rings, un[g] != 0, dl[g], p, labels, res[(std::size_t)g]);
+        }
+      });
+    });
   }
   return pack(res, labels);
 }
@@ -231,29 +219,29 @@ nb::tuple offset_polygons(In2<double> XY, In1<i64> RO, In1<i64> PO, In1<i64> GO,
   {
     nb::gil_scoped_release nogil;
     mk::parallel_chunks(ng, threads, [&](int, i64 g0, i64 g1) {
-      Worker& wk = worker();
-      mk::off::Offsetter& off = wk.off;
-      std::vector<mk::ms::Ring>& rings = wk.rings;
-      CheckScratch& cs = wk.cs;
-      for (i64 g = g0; g < g1; ++g) {
-        mk::off::Result& out = res[(std::size_t)g];
-        const i64 p0 = go[g], p1 = go[g + 1], P = p1 - p0, r0 = po[p0], R = po[p1] - r0;
-        bool unite = false;
-        if (!valid_parts(xy, ro + r0, R, po + p0, P, r0, cs, unite)) {
-          out = mk::off::Result();
-          out.code = mk::off::INPUT;
-          continue;
+      with_worker([&](Worker& wk) {
+        mk::off::Offsetter& off = wk.off;
+        std::vector<mk::ms::Ring>& rings = wk.rings;
+        CheckScratch& cs = wk.cs;
+        for (i64 g = g0; g < g1; ++g) {
+          mk::off::Result& out = res[(std::size_t)g];
+          const i64 p0 = go[g], p1 = go[g + 1], P = p1 - p0, r0 = po[p0], R = po[p1] - r0;
+          bool unite = false;
+          if (!valid_parts(xy, ro + r0, R, po + p0, P, r0, cs, unite)) {
+            out = mk::off::Result();
+            out.code = mk::off::INPUT;
+            continue;
+          }
+          rings.clear();
+          for (i64 q = p0; q < p1; ++q)
+            for (i64 r = po[q]; r < po[q + 1]; ++r)
+              rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], r != po[q]));
+          mk::off::Params p = base;
+          p.distance = ds[g];
+          p.tolerance = ts[g];
+          off.run(rings, unite, delta, p, false, out);
         }
-        rings.clear();
-        for (i64 q = p0; q < p1; ++q)
-          for (i64 r = po[q]; r < po[q + 1]; ++r)
-            rings.push_back(mk::ms::make_ring(xy + 2 * ro[r], ro[r + 1] - ro[r], r != po[q]));
-        mk::off::Params p = base;
-        p.distance = ds[g];
-        p.tolerance = ts[g];
-        off.run(rings, unite, delta, p, false, out);
-      }
-      release_large();
+      });
     });
   }
   return pack(res, false);
@@ -272,39 +260,36 @@ nb::object offset_one(In2<double> XY, double distance, double tolerance, double 
   const i64 n = (i64)XY.shape(0);
   if (XY.shape(1) != 2 || n < 4) return nb::none();
   const double* xy = XY.data();
-  Worker& wk = worker();
-  mk::off::Result& out = wk.one;
-  bool ok = false;
-  {
-    nb::gil_scoped_release nogil;
-    const double x0 = xy[0], y0 = xy[1];
-    bool one = xy[2 * n - 2] == x0 && xy[2 * n - 1] == y0;
-    for (i64 i = 1; i + 1 < n && one; ++i) one = !(xy[2 * i] == x0 && xy[2 * i + 1] == y0);
-    const i64 ro[2] = {0, n}, po[2] = {0, 1};
-    bool unite = false;
-    if (one && valid_parts(xy, ro, 1, po, 1, 0, wk.cs, unite)) {
-      wk.rings.clear();
-      wk.rings.push_back(mk::ms::make_ring(xy, n, false));
-      wk.off.run(wk.rings, false, 0.0, params(distance, tolerance, default_rel, outer, join, limit),
-                 false, out);
-      ok = out.status == mk::OK && out.code == mk::off::FINE;
+  nb::object got = nb::none();
+  with_worker([&](Worker& wk) {
+    mk::off::Result& out = wk.one;
+    bool ok = false;
+    {
+      nb::gil_scoped_release nogil;
+      const double x0 = xy[0], y0 = xy[1];
+      bool one = xy[2 * n - 2] == x0 && xy[2 * n - 1] == y0;
+      for (i64 i = 1; i + 1 < n && one; ++i) one = !(xy[2 * i] == x0 && xy[2 * i + 1] == y0);
+      const i64 ro[2] = {0, n}, po[2] = {0, 1};
+      bool unite = false;
+      if (one && valid_parts(xy, ro, 1, po, 1, 0, wk.cs, unite)) {
+        wk.rings.clear();
+        wk.rings.push_back(mk::ms::make_ring(xy, n, false));
+        wk.off.run(wk.rings, false, 0.0,
+                   params(distance, tolerance, default_rel, outer, join, limit), false, out);
+        ok = out.status == mk::OK && out.code == mk::off::FINE;
+      }
     }
-  }
-  if (!ok) {
-    release_large();
-    return nb::none();
-  }
-  const auto& R = out.rings;
-  i64 rows = 0, nr = 0, np_ = 0, row = 0, ring = 0, poly = 0;
-  count_closed(R, rows, nr, np_);
-  double* oxy = alloc<double>(2 * rows);
-  i64* oro = alloc<i64>(nr + 1);
-  oro[0] = 0;
-  append_closed(R, oxy, oro, nullptr, row, ring, poly);
-  nb::tuple got = nb::make_tuple(owned(oxy, (std::size_t)rows, 2),
-                                owned(oro, (std::size_t)nr + 1, 0),
-                                to_numpy(R.poly_off, R.poly_off.size(), 0));
-  release_large();  // (may free `out`)
+    if (!ok) return;
+    const auto& R = out.rings;
+    i64 rows = 0, nr = 0, np_ = 0, row = 0, ring = 0, poly = 0;
+    count_closed(R, rows, nr, np_);
+    double* oxy = alloc<double>(2 * rows);
+    i64* oro = alloc<i64>(nr + 1);
+    oro[0] = 0;
+    append_closed(R, oxy, oro, nullptr, row, ring, poly);
+    got = nb::make_tuple(owned(oxy, (std::size_t)rows, 2), owned(oro, (std::size_t)nr + 1, 0),
+                         to_numpy(R.poly_off, R.poly_off.size(), 0));
+  });
   return got;
 }
 

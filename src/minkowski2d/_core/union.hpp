@@ -57,6 +57,7 @@
 #include <utility>
 #include <vector>
 
+#include "buffer.hpp"
 #include "convex.hpp"
 #include "exact.hpp"
 #include "exactnum.hpp"
@@ -459,27 +460,16 @@ struct Workspace {
   }
 };
 
-// f(Workspace&) with this thread's workspace (a fresh one when called re-entrantly)
+// f(Workspace&) with this thread's workspace, cleared (buffer.hpp's
+// with_thread_workspace)
 template <class F>
 inline auto with_workspace(F&& f) {
-  thread_local std::unique_ptr<Workspace> w;
-  thread_local bool busy = false;
-  if (busy) {
-    auto tmp = std::make_unique<Workspace>();
-    return f(*tmp);
-  }
-  struct Guard {
-    bool& b;
-    std::unique_ptr<Workspace>& w;
-    ~Guard() {
-      b = false;
-      if (w && w->g.verts.capacity() > Workspace::KEEP) w.reset();
-    }
-  } guard{busy, w};
-  busy = true;
-  if (!w) w = std::make_unique<Workspace>();
-  w->clear();
-  return f(*w);
+  return with_thread_workspace<Workspace>(
+      [](const Workspace& w) { return w.g.verts.capacity() > Workspace::KEEP; },
+      [&](Workspace& w) {
+        w.clear();
+        return f(w);
+      });
 }
 
 // ------------------------------------------------------------------------------------
