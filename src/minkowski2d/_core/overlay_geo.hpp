@@ -145,11 +145,10 @@ class Geo {
     if (!(v.x.e <= 1e308 && v.y.e <= 1e308)) {
       // nearly parallel lines: the same in extended precision (else every comparison
       // with this vertex would redo that, and sorts place it by a meaningless value)
-      FEL Nl, Dl;
-      cross_nd<FEL>(l1, l2, Nl, Dl, &cfel);
-      FEL tl = fe_div(Nl, Dl);
-      v.x = fe_of(cfel(a.x) + (cfel(b.x) - cfel(a.x)) * tl);
-      v.y = fe_of(cfel(a.y) + (cfel(b.y) - cfel(a.y)) * tl);
+      FEL xl, yl;
+      cross_l(l1, l2, xl, yl);
+      v.x = fe_of(xl);
+      v.y = fe_of(yl);
     }
     // an unbounded (or NaN) bound: no information, every decision goes exact
     if (!(v.x.e <= 1e308) || !(v.x.v - v.x.v == 0)) v.x = FE{0, INFINITY};
@@ -178,6 +177,15 @@ class Geo {
     T dx = conv(d.x) - conv(c.x), dy_ = conv(d.y) - conv(c.y);
     N = cross(conv(c.x) - conv(a.x), conv(c.y) - conv(a.y), dx, dy_);
     D = cross(conv(b.x) - conv(a.x), conv(b.y) - conv(a.y), dx, dy_);
+  }
+  // the crossing of lines l1 and l2 in extended precision, with certified bounds
+  void cross_l(i64 l1, i64 l2, FEL& x, FEL& y) const {
+    const P &a = pts[lines[l1].a], &b = pts[lines[l1].b];
+    FEL N, D;
+    cross_nd<FEL>(l1, l2, N, D, &cfel);
+    const FEL t = fe_div(N, D);
+    x = cfel(a.x) + (cfel(b.x) - cfel(a.x)) * t;
+    y = cfel(a.y) + (cfel(b.y) - cfel(a.y)) * t;
   }
 
   // exact homogeneous coordinates (X / W, Y / W), W > 0
@@ -399,18 +407,10 @@ class Geo {
       }
     }
     // extended precision with a certified bound; exact when it cannot certify
-    auto L = [](DD u) {
-      long double s = (long double)u.hi + (long double)u.lo;
-      return FEL{s, u.lo == 0 ? 0.0L : FEconst<long double>::U * std::fabs(s)};
-    };
-    const P &a = pts[lines[V.l1].a], &b = pts[lines[V.l1].b];
-    const P &c = pts[lines[V.l2].a], &d = pts[lines[V.l2].b];
-    FEL dx = L(d.x) - L(c.x), dyv = L(d.y) - L(c.y);
-    FEL N = cross(L(c.x) - L(a.x), L(c.y) - L(a.y), dx, dyv);
-    FEL D = cross(L(b.x) - L(a.x), L(b.y) - L(a.y), dx, dyv);
-    FEL t = fe_div(N, D);
-    x = certified(L(a.x) + (L(b.x) - L(a.x)) * t);
-    y = certified(L(a.y) + (L(b.y) - L(a.y)) * t);
+    FEL xl, yl;
+    cross_l(V.l1, V.l2, xl, yl);
+    x = certified(xl);
+    y = certified(yl);
     if (!(x == x && y == y)) {
       Dy X, Y, W;
       exact(v, X, Y, W);
