@@ -100,6 +100,26 @@ void box_pairs(i64 n, const C* xmin, const C* xmax, const C* ymin, const C* ymax
 
 namespace mk {
 
+// Sorts a[0, n) by less (a strict total order) when it is nearly sorted already: by
+// insertion while the elements moved stay within n, else by a full sort (the same
+// order either way).
+template <class T, class Less>
+void insertion_or_sort(T* a, std::size_t n, Less&& less) {
+  std::size_t moves = 0;
+  for (std::size_t t = 1; t < n; ++t) {
+    if (!less(a[t], a[t - 1])) continue;
+    const T x = a[t];
+    std::size_t q = t;
+    for (; q > 0 && less(x, a[q - 1]); --q) a[q] = a[q - 1];
+    a[q] = x;
+    moves += t - q;
+    if (moves > n) {  // far from sorted
+      std::sort(a, a + n, less);
+      return;
+    }
+  }
+}
+
 // Scratch of box_pairs_grouped, reusable across calls (no allocation once grown).
 struct BoxScratch {
   std::vector<i64> order;
@@ -145,16 +165,7 @@ inline bool box_pairs_scan(i64 n, const double* xmin, const double* xmax, const 
       const i64 i = x_hint[t];
       b[t] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
     }
-    i64 moves = 0;
-    for (i64 t = 1; t < n && moves <= n; ++t) {
-      if (!less(b[t], b[t - 1])) continue;
-      const BoxScratch::Box x = b[t];
-      i64 q = t;
-      for (; q > 0 && less(x, b[q - 1]); --q) b[q] = b[q - 1];
-      b[q] = x;
-      moves += t - q;
-    }
-    if (moves > n) std::sort(b.begin(), b.end(), less);
+    insertion_or_sort(b.data(), (std::size_t)n, less);
   } else {
     for (i64 i = 0; i < n; ++i) b[i] = {xmin[i], xmax[i], ymin[i], ymax[i], i, group[i]};
     std::sort(b.begin(), b.end(), less);

@@ -283,19 +283,7 @@ class Overlay {
     tmp.resize(n);
     for (std::size_t t = 0; t < n; ++t) tmp[t] = a[ak_[t].i];
     a.swap(tmp);
-    std::size_t moves = 0;
-    for (std::size_t t = 1; t < n; ++t) {
-      if (!exact_less(a[t], a[t - 1])) continue;
-      T x = a[t];
-      std::size_t q = t;
-      for (; q > 0 && exact_less(x, a[q - 1]); --q) a[q] = a[q - 1];
-      a[q] = x;
-      moves += t - q;
-      if (moves > n) {  // far from sorted: sort it all exactly
-        std::sort(a.begin(), a.end(), exact_less);
-        return;
-      }
-    }
+    insertion_or_sort(a.data(), n, exact_less);  // far from sorted: sorted exactly
   }
 
   // certainly the same point without the crossings' coordinates: the same id, crossings
