@@ -182,12 +182,19 @@ bool valid_parts(const double* xy, const i64* ro, i64 R, const i64* po, i64 P, i
   for (i64 q = 0; q <= P; ++q) lpo[q] = po[q] - r0;
   orient.resize((std::size_t)R);
   disc.resize((std::size_t)P);
-  if (!mk::polygon::check(xy, ro, R, lpo.data(), P, false, orient.data(), disc.data()).ok())
-    return false;
-  for (i64 q = 0; q < P; ++q)
-    if (disc[q]) return false;
-  unite = P > 1 &&
-          !mk::polygon::check(xy, ro, R, lpo.data(), P, true, orient.data(), disc.data()).ok();
+  // several parts: the check of disjoint parts first (the per-polygon checks, then one
+  // sweep of them all); only when that fails, the per-polygon checks alone (the parts
+  // then overlap or touch along edges: united)
+  auto valid = [&](bool disjoint) {
+    if (!mk::polygon::check(xy, ro, R, lpo.data(), P, disjoint, orient.data(), disc.data()).ok())
+      return false;
+    for (i64 q = 0; q < P; ++q)
+      if (disc[q]) return false;
+    return true;
+  };
+  if (P > 1 && valid(true)) return true;
+  if (!valid(false)) return false;
+  unite = P > 1;
   return true;
 }
 
